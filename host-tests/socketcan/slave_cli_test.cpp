@@ -1,0 +1,93 @@
+// costa-slave as a process on vcan: clean shutdown, the trace, and its error paths.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <thread>
+
+#include "frame_text.hpp"
+#include "socket_bus.hpp"
+#include "transcript_player.hpp"
+
+namespace costa::test {
+namespace {
+
+int countLines(const std::string& text) {
+  int lines = 0;
+  for (const char c : text) {
+    lines += c == '\n' ? 1 : 0;
+  }
+  return lines;
+}
+
+TEST(SlaveProcessOnVcan, StopsCleanlyOnSigtermAndSigint) {
+  for (const int signal : {SIGTERM, SIGINT}) {
+    SocketBus bus("example", 7);
+    ASSERT_EQ(bus.error(), "");
+    EXPECT_EQ(playText("tx 707 [1] 00", bus, kSocketReceiveTimeoutMs), "");
+    EXPECT_EQ(bus.slave().stop(signal), 0) << bus.slave().output();
+    EXPECT_NE(bus.slave().output().find("costa-slave: stopped"), std::string::npos);
+  }
+}
+
+TEST(SlaveProcessOnVcan, TraceShowsEveryFrameWithItsMeaning) {
+  SocketBus bus("example", 1, {"--trace"});
+  ASSERT_EQ(bus.error(), "");
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    rx 601 [8] 40 08 10 00 00 00 00 00
+    tx 581 [8] 41 08 10 00 0D 00 00 00
+    rx 601 [8] 60 00 00 00 00 00 00 00
+    tx 581 [8] 00 43 6F 73 74 61 20 65
+    rx 601 [8] 70 00 00 00 00 00 00 00
+    tx 581 [8] 13 78 61 6D 70 6C 65 00
+    rx 601 [8] 2B 17 10 00 E8 03 00 00
+    tx 581 [8] 60 17 10 00 00 00 00 00
+  )",
+                     bus, kSocketReceiveTimeoutMs),
+            "");
+  EXPECT_EQ(bus.slave().stop(SIGTERM), 0);
+  const std::string output = bus.slave().output();
+  EXPECT_NE(output.find("tx 701 [1] 00"), std::string::npos) << output;
+  EXPECT_NE(output.find("boot-up"), std::string::npos) << output;
+  EXPECT_NE(output.find("rx 601 [8] 40 08 10 00 00 00 00 00"), std::string::npos) << output;
+  EXPECT_NE(output.find("SDO upload 0x1008:00"), std::string::npos) << output;
+  EXPECT_NE(output.find("0x1008:00 = \"Costa example\""), std::string::npos) << output;
+  EXPECT_NE(output.find("SDO download 0x1017:00 = 1000"), std::string::npos) << output;
+}
+
+TEST(SlaveProcessOnVcan, UnknownInterfaceIsOneLineAndNonZero) {
+  SlaveProcess slave({"--iface", "nosuchcan0", "example"});
+  const int status = slave.waitExit(5000);
+  EXPECT_EQ(status, 1);
+  EXPECT_EQ(slave.output(), "costa-slave: no such CAN interface: nosuchcan0\n");
+}
+
+TEST(SlaveCommandLine, BadArgumentsAreOneLineAndNonZero) {
+  struct Case {
+    std::vector<std::string> arguments;
+    const char* message;
+  };
+  const Case cases[] = {
+      {{"toaster"}, "costa-slave: unknown device 'toaster'"},
+      {{"--node-id", "0", "example"}, "costa-slave: invalid node-id '0': expected 1..127\n"},
+      {{"--node-id", "300", "example"}, "costa-slave: invalid node-id '300': expected 1..127\n"},
+      {{}, "costa-slave: no DEVICE given"},
+  };
+  for (const Case& c : cases) {
+    SlaveProcess slave(c.arguments);
+    EXPECT_EQ(slave.waitExit(5000), 2);
+    const std::string output = slave.output();
+    EXPECT_EQ(output.rfind(c.message, 0), 0U) << output;
+    EXPECT_EQ(countLines(output), 1) << output;
+  }
+}
+
+TEST(SlaveCommandLine, HelpListsTheInterface) {
+  SlaveProcess slave({"--help"});
+  EXPECT_EQ(slave.waitExit(5000), 0);
+  EXPECT_NE(slave.output().find("--iface NAME"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace costa::test

@@ -1,0 +1,41 @@
+// costa-slave on a vcan interface, as a TranscriptBus: the test's raw socket sends the `rx`
+// frames and receives what the slave sends; time is real.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "raw_socket.hpp"
+#include "slave_process.hpp"
+#include "transcript_player.hpp"
+
+namespace costa::test {
+
+class SocketBus : public TranscriptBus {
+ public:
+  /// Opens the test socket first (so the boot-up frame is seen), then starts costa-slave with
+  /// `--iface <testInterface()> --node-id <nodeId> <extra...> <device>`.
+  SocketBus(const std::string& device, int nodeId, const std::vector<std::string>& extra = {});
+
+  /// Empty when the bus is usable, else why not.
+  const std::string& error() const { return error_; }
+
+  void send(const CanFrame& frame) override;
+  bool receive(CanFrame* frame, int timeoutMs) override;
+  void wait(uint64_t milliseconds) override;
+  bool checksTiming() const override { return false; }
+
+  SlaveProcess& slave() { return *slave_; }
+
+ private:
+  RawCanSocket socket_;
+  std::unique_ptr<SlaveProcess> slave_;
+  std::string error_;
+};
+
+/// Milliseconds to wait for each expected frame over SocketCAN (generous: the suite may run
+/// in an emulated machine).
+inline constexpr int kSocketReceiveTimeoutMs = 3000;
+
+}  // namespace costa::test

@@ -1,0 +1,25 @@
+// Catches heap use by the stack: tests run every call into the stack inside a
+// NoAllocationScope; a global operator new called inside one fails the running test.
+#pragma once
+
+#include <stddef.h>
+
+namespace costa::test {
+
+/// While alive, any global operator new (or new[]) is a test failure, reported when the scope
+/// ends. Scopes nest.
+class NoAllocationScope {
+ public:
+  NoAllocationScope();
+  ~NoAllocationScope();
+  NoAllocationScope(const NoAllocationScope&) = delete;
+  NoAllocationScope& operator=(const NoAllocationScope&) = delete;
+
+ private:
+  size_t violationsAtStart_;
+};
+
+/// Allocations made inside a NoAllocationScope since the program started.
+size_t forbiddenAllocations();
+
+}  // namespace costa::test

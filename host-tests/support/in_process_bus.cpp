@@ -1,0 +1,65 @@
+#include "in_process_bus.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "allocation_guard.hpp"
+#include "device_registry.hpp"
+
+namespace costa::test {
+
+InProcessBus::InProcessBus(const std::string& device, int nodeId,
+                           const host::TargetOptions& extra) {
+  const host::DeviceEntry* entry = host::findDevice(device);
+  if (entry == nullptr) {
+    throw std::runtime_error("unknown device " + device);
+  }
+  host::TargetOptions options = extra;
+  options.nodeId = nodeId;
+  std::string error;
+  target_ = entry->create(can_, options, &error);
+  if (!target_) {
+    throw std::runtime_error(error);
+  }
+  NoAllocationScope scope;
+  target_->start(now_);
+  nextDeadline_ = target_->process(now_);
+}
+
+void InProcessBus::send(const CanFrame& frame) {
+  NoAllocationScope scope;
+  target_->onFrame(frame, now_);
+  nextDeadline_ = target_->process(now_);
+}
+
+bool InProcessBus::receive(CanFrame* frame, int timeoutMs) {
+  (void)timeoutMs;
+  if (cursor_ == can_.count()) {
+    return false;
+  }
+  *frame = can_.at(cursor_++);
+  return true;
+}
+
+void InProcessBus::advance(Microseconds microseconds) {
+  NoAllocationScope scope;
+  const Microseconds end = now_ + microseconds;
+  while (nextDeadline_ <= end) {
+    if (nextDeadline_ <= now_ && now_ != 0U) {
+      ADD_FAILURE() << "process() asked to run again at " << nextDeadline_ << " us, not after now ("
+                    << now_ << " us)";
+      break;
+    }
+    now_ = nextDeadline_ > now_ ? nextDeadline_ : now_;
+    nextDeadline_ = target_->process(now_);
+  }
+  now_ = end;
+  nextDeadline_ = target_->process(now_);
+}
+
+void InProcessBus::wait(uint64_t milliseconds) {
+  advance(milliseconds * 1000U);
+}
+
+}  // namespace costa::test

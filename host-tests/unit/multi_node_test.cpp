@@ -1,0 +1,79 @@
+// Several independent nodes in one program, on one in-memory bus.
+#include <gtest/gtest.h>
+
+#include "allocation_guard.hpp"
+#include "costa/port/memory/memory_can_bus.hpp"
+#include "example_target.hpp"
+#include "frame_text.hpp"
+
+namespace costa::test {
+namespace {
+
+CanFrame frame(const char* text) {
+  CanFrame result;
+  std::string error;
+  EXPECT_TRUE(host::parseFrame(text, &result, &error)) << error;
+  return result;
+}
+
+std::string next(port::MemoryCanEndpoint& endpoint) {
+  CanFrame received;
+  return endpoint.receive(&received) ? host::formatFrame(received) : "nothing";
+}
+
+TEST(MultiNode, NodesShareABusAndAnswerOnlyForThemselves) {
+  port::MemoryCanBus bus;
+  port::MemoryCanEndpoint client;
+  port::MemoryCanEndpoint portA;
+  port::MemoryCanEndpoint portB;
+  bus.attach(client);
+  bus.attach(portA);
+  bus.attach(portB);
+  example::ExampleTarget nodeA(portA, 5);
+  example::ExampleTarget nodeB(portB, 9);
+  const auto deliver = [&](Microseconds now) {
+    NoAllocationScope scope;
+    CanFrame received;
+    while (portA.receive(&received)) {
+      nodeA.onFrame(received, now);
+    }
+    while (portB.receive(&received)) {
+      nodeB.onFrame(received, now);
+    }
+  };
+  {
+    NoAllocationScope scope;
+    nodeA.start(0);
+    nodeB.start(0);
+  }
+  EXPECT_EQ(next(client), "705 [1] 00");
+  EXPECT_EQ(next(client), "709 [1] 00");
+  deliver(0);  // the nodes see each other's boot-up and ignore it
+
+  client.tryTransmit(frame("605 [8] 2B 17 10 00 0A 00 00 00"));  // node 5: heartbeat 10 ms
+  client.tryTransmit(frame("609 [8] 40 00 12 01 00 00 00 00"));  // node 9: its SDO COB-ID
+  deliver(1000);
+  EXPECT_EQ(next(client), "585 [8] 60 17 10 00 00 00 00 00");
+  EXPECT_EQ(next(client), "589 [8] 43 00 12 01 09 06 00 00");
+  EXPECT_EQ(nodeA.node().dictionary().readUnsigned(0x1017, 0, 0), 10U);
+  EXPECT_EQ(nodeB.node().dictionary().readUnsigned(0x1017, 0, 0), 0U);
+
+  client.tryTransmit(frame("000 [2] 01 00"));  // start all
+  deliver(2000);
+  EXPECT_EQ(nodeA.node().state(), NmtState::kOperational);
+  EXPECT_EQ(nodeB.node().state(), NmtState::kOperational);
+  client.tryTransmit(frame("000 [2] 02 09"));  // stop node 9 only
+  deliver(3000);
+  EXPECT_EQ(nodeA.node().state(), NmtState::kOperational);
+  EXPECT_EQ(nodeB.node().state(), NmtState::kStopped);
+  {
+    NoAllocationScope scope;
+    nodeA.process(11000);
+    nodeB.process(11000);
+  }
+  EXPECT_EQ(next(client), "705 [1] 05");
+  EXPECT_EQ(next(client), "nothing");
+}
+
+}  // namespace
+}  // namespace costa::test

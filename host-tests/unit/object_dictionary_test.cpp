@@ -1,0 +1,137 @@
+// The dictionary runtime against the generated example tables: lookup, types, limits,
+// defaults, node-id relative values, restores.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "costa/od/object_dictionary.hpp"
+#include "example_od.hpp"
+
+namespace costa::od {
+namespace {
+
+class ObjectDictionaryTest : public ::testing::Test {
+ protected:
+  ObjectDictionaryTest() : dictionary_(gen::example::kDefinition, &values_) {
+    dictionary_.setNodeId(5);
+    dictionary_.restoreDefaults(0x0000, 0xFFFF);
+  }
+  gen::example::Values values_{};
+  ObjectDictionary dictionary_;
+};
+
+TEST_F(ObjectDictionaryTest, ObjectsAreSortedAndEveryEntryIsFound) {
+  const Definition& definition = gen::example::kDefinition;
+  ASSERT_GT(definition.objectCount, 10U);
+  for (uint16_t i = 0; i < definition.objectCount; ++i) {
+    const Object& object = definition.objects[i];
+    if (i > 0) {
+      EXPECT_LT(definition.objects[i - 1].index, object.index);
+    }
+    for (uint8_t s = 0; s < object.subCount; ++s) {
+      EntryRef ref;
+      EXPECT_EQ(dictionary_.find(object.index, object.subs[s].subIndex, &ref), AbortCode::kNone);
+      EXPECT_EQ(ref.entry, &object.subs[s]);
+    }
+  }
+}
+
+TEST_F(ObjectDictionaryTest, MissingObjectsAndSubIndicesHaveTheirAbortCodes) {
+  EntryRef ref;
+  EXPECT_EQ(dictionary_.find(0x0FFF, 0, &ref), AbortCode::kNoObject);
+  EXPECT_EQ(dictionary_.find(0xFFFF, 0, &ref), AbortCode::kNoObject);
+  EXPECT_EQ(dictionary_.find(0x1018, 5, &ref), AbortCode::kNoSubIndex);
+  EXPECT_FALSE(dictionary_.find(0x1018, 0xFF).valid());
+}
+
+TEST_F(ObjectDictionaryTest, DefaultsAreInRamAndReachableByName) {
+  EXPECT_EQ(values_.x2000_setpoint, 1000U);
+  EXPECT_EQ(values_.x2004_mixed_record.offset, -5);
+  EXPECT_FLOAT_EQ(values_.x2004_mixed_record.gain, 1.5F);
+  EXPECT_EQ(values_.x2005_table.item[3], 0x1234U);
+  EXPECT_STREQ(values_.x2006_device_label, "unnamed");
+  EXPECT_EQ(dictionary_.readUnsigned(0x2000, 0, 0), 1000U);
+  EXPECT_EQ(dictionary_.readSigned(*dictionary_.find(0x2004, 3).entry), -100000);
+}
+
+TEST_F(ObjectDictionaryTest, NodeIdRelativeConstantsFollowTheNodeId) {
+  EXPECT_EQ(dictionary_.readUnsigned(0x1200, 1, 0), 0x605U);
+  dictionary_.setNodeId(0x7F);
+  EXPECT_EQ(dictionary_.readUnsigned(0x1200, 2, 0), 0x5FFU);
+  uint8_t wire[4] = {};
+  EXPECT_EQ(dictionary_.read(*dictionary_.find(0x1200, 1).entry, 0, wire, 4), 4U);
+  EXPECT_EQ(wire[0], 0x7FU);
+  EXPECT_EQ(wire[1], 0x06U);
+}
+
+TEST_F(ObjectDictionaryTest, ConstantsAreNotInRamAndCannotBeWritten) {
+  const EntryRef name = dictionary_.find(0x1008, 0);
+  ASSERT_TRUE(name.valid());
+  EXPECT_NE(name.entry->attributes & kInRom, 0U);
+  EXPECT_EQ(dictionary_.ramAddress(*name.entry), nullptr);
+  const uint8_t data[2] = {'x', 0};
+  EXPECT_EQ(dictionary_.write(*name.entry, data, 1), AbortCode::kWriteOfReadOnly);
+  EXPECT_EQ(dictionary_.valueSize(*name.entry), 13U);
+}
+
+TEST_F(ObjectDictionaryTest, ChecksLengthsAndLimitsBeforeStoring) {
+  const SubEntry& setpoint = *dictionary_.find(0x2000, 0).entry;
+  const uint8_t tooHigh[4] = {0xA1, 0x86, 0x01, 0x00};
+  const uint8_t ok[4] = {0x10, 0x27, 0x00, 0x00};
+  EXPECT_EQ(dictionary_.write(setpoint, tooHigh, 4), AbortCode::kValueTooHigh);
+  EXPECT_EQ(dictionary_.write(setpoint, ok, 3), AbortCode::kLengthTooLow);
+  EXPECT_EQ(dictionary_.write(setpoint, ok, 5), AbortCode::kLengthTooHigh);
+  EXPECT_EQ(values_.x2000_setpoint, 1000U);
+  EXPECT_EQ(dictionary_.write(setpoint, ok, 4), AbortCode::kNone);
+  EXPECT_EQ(values_.x2000_setpoint, 10000U);
+}
+
+TEST_F(ObjectDictionaryTest, RealLimitsRejectNotANumber) {
+  const SubEntry& gain = *dictionary_.find(0x2004, 4).entry;
+  const uint8_t nan[4] = {0x00, 0x00, 0xC0, 0x7F};
+  EXPECT_EQ(dictionary_.write(gain, nan, 4), AbortCode::kInvalidValue);
+}
+
+TEST_F(ObjectDictionaryTest, StringsArePaddedAndReadUpToTheirLength) {
+  const SubEntry& label = *dictionary_.find(0x2006, 0).entry;
+  const uint8_t text[3] = {'a', 'b', 'c'};
+  EXPECT_EQ(dictionary_.write(label, text, 3), AbortCode::kNone);
+  EXPECT_STREQ(values_.x2006_device_label, "abc");
+  EXPECT_EQ(dictionary_.valueSize(label), 3U);
+  uint8_t out[8] = {};
+  EXPECT_EQ(dictionary_.read(label, 1, out, sizeof(out)), 2U);
+  EXPECT_EQ(out[0], 'b');
+  EXPECT_EQ(dictionary_.read(label, 3, out, sizeof(out)), 0U);
+}
+
+TEST_F(ObjectDictionaryTest, RestoresRangesAndGroups) {
+  values_.x1017_producer_heartbeat_time = 77;
+  values_.x2000_setpoint = 77;
+  dictionary_.restoreDefaults(0x1000, 0x1FFF);
+  EXPECT_EQ(values_.x1017_producer_heartbeat_time, 0U);
+  EXPECT_EQ(values_.x2000_setpoint, 77U);
+  dictionary_.restoreGroupDefaults(kGroupApplication);
+  EXPECT_EQ(values_.x2000_setpoint, 1000U);
+}
+
+TEST_F(ObjectDictionaryTest, AttributesFollowTheAccessTypes) {
+  const auto attributes = [&](uint16_t index, uint8_t sub) {
+    return dictionary_.find(index, sub).entry->attributes;
+  };
+  EXPECT_EQ(attributes(0x2001, 0) & (kReadable | kWritable), kReadable);  // ro
+  EXPECT_EQ(attributes(0x2002, 0) & (kReadable | kWritable), kWritable);  // wo
+  EXPECT_EQ(attributes(0x2000, 0) & (kReadable | kWritable), kReadable | kWritable);
+  EXPECT_NE(attributes(0x2004, 3) & kRpdoMappable, 0U);  // rww
+  EXPECT_EQ(attributes(0x2004, 3) & kTpdoMappable, 0U);
+  EXPECT_NE(attributes(0x2004, 5) & kTpdoMappable, 0U);  // rwr
+  EXPECT_EQ(attributes(0x2004, 5) & kRpdoMappable, 0U);
+}
+
+TEST(GeneratedCapacity, DescribesTheDictionary) {
+  EXPECT_EQ(gen::example::Capacity::kLargestValue, 32U);
+  EXPECT_EQ(gen::example::Capacity::kRpdoCount, 0U);
+  EXPECT_EQ(gen::example::Capacity::kObjectCount, gen::example::kDefinition.objectCount);
+}
+
+}  // namespace
+}  // namespace costa::od

@@ -1,0 +1,150 @@
+"""Where every value lives: the members of the Values (RAM) and Constants (ROM) structs, and
+the offsetof() expression of each sub-entry."""
+
+from dataclasses import dataclass, field
+
+from cpp_names import struct_member, struct_type, sub_members, var_member
+from data_types import OBJECT_ARRAY
+from eds_model import Device, Entry, OdObject
+
+VALUES = "Values"
+CONSTANTS = "Constants"
+
+
+def element_suffix(entry: Entry) -> str:
+    """Array bounds that follow the member name for one value of `entry`."""
+    if entry.data_type.kind == "visible":
+        return f"[{entry.size + 1}]"  # one more byte keeps the text NUL-terminated
+    if entry.data_type.kind == "octet":
+        return f"[{entry.size}]"
+    return ""
+
+
+def storage_bytes(entry: Entry) -> int:
+    return entry.size + 1 if entry.data_type.kind == "visible" else entry.size
+
+
+def element_type(entry: Entry) -> str:
+    """The C++ type of one value, as written inside sizeof()."""
+    return entry.data_type.cpp_type + element_suffix(entry)
+
+
+@dataclass
+class Member:
+    """A member of a block or of a nested struct: one entry, or `item[N]` for N entries."""
+    name: str
+    entries: list
+
+    @property
+    def is_items(self) -> bool:
+        return len(self.entries) > 1 or self.name == "item"
+
+    def declaration(self) -> str:
+        first = self.entries[0]
+        count = f"[{len(self.entries)}]" if self.is_items else ""
+        return f"{first.data_type.cpp_type} {self.name}{count}{element_suffix(first)};"
+
+
+@dataclass
+class BlockMember:
+    """A member of Values or Constants: a VAR's value or the struct of an ARRAY/RECORD."""
+    obj: OdObject
+    name: str
+    struct_type: str = ""             # empty for a VAR
+    members: list = field(default_factory=list)  # Member; for a VAR exactly one
+
+
+@dataclass
+class Block:
+    type_name: str                    # Values or Constants
+    members: list = field(default_factory=list)  # BlockMember
+
+
+@dataclass
+class SizeCheck:
+    expression: str                   # sizeof(...)
+    size: int
+    label: str
+
+
+@dataclass
+class Layout:
+    values: Block
+    constants: Block
+    offsets: dict = field(default_factory=dict)      # (index, sub) -> C++ expression
+    size_checks: list = field(default_factory=list)  # SizeCheck
+
+
+def _items_form(obj: OdObject, block_entries: list) -> bool:
+    """True when subs 1..N of an ARRAY all live in this block with one C++ type."""
+    if obj.code != OBJECT_ARRAY:
+        return False
+    items = [e for e in obj.entries if e.sub != 0]
+    if not items or [e.sub for e in items] != list(range(1, len(items) + 1)):
+        return False
+    first = items[0]
+    return all(e in block_entries and e.data_type is first.data_type and e.size == first.size
+               for e in items)
+
+
+def _object_member(obj: OdObject, rom: bool):
+    entries = [e for e in obj.entries if e.has_storage and e.in_rom == rom]
+    if not entries:
+        return None
+    if not obj.is_compound:
+        return BlockMember(obj, var_member(obj.index, obj.name),
+                           members=[Member(var_member(obj.index, obj.name), entries)])
+    member = BlockMember(obj, struct_member(obj.index, obj.name),
+                         struct_type(obj.index, obj.name))
+    names = sub_members([(e.sub, e.name) for e in obj.entries])
+    if _items_form(obj, entries):
+        member.members = [Member(names[e.sub], [e]) for e in entries if e.sub == 0]
+        member.members.append(Member("item", [e for e in entries if e.sub != 0]))
+    else:
+        member.members = [Member(names[e.sub], [e]) for e in entries]
+    return member
+
+
+def _record_block(block: Block, layout: Layout) -> None:
+    """Offsets and size checks of every entry stored in `block`."""
+    owner = block.type_name
+    for top in block.members:
+        base = f"offsetof({owner}, {top.name})"
+        for member in top.members:
+            if top.struct_type:
+                scope = f"{owner}::{top.struct_type}"
+                where = f"{base} + offsetof({scope}, {member.name})"
+                qualified = f"{scope}::{member.name}"
+            else:
+                where, qualified = base, f"{owner}::{member.name}"
+            first = member.entries[0]
+            if not member.is_items:
+                layout.offsets[(first.index, first.sub)] = where
+                layout.size_checks.append(SizeCheck(f"sizeof({qualified})",
+                                                    storage_bytes(first),
+                                                    f"0x{first.index:04X}:{first.sub}"))
+                continue
+            for k, entry in enumerate(member.entries):
+                step = f" + {k} * sizeof({element_type(entry)})" if k else ""
+                layout.offsets[(entry.index, entry.sub)] = where + step
+            layout.size_checks.append(SizeCheck(f"sizeof({qualified}[0])",
+                                                storage_bytes(first),
+                                                f"0x{first.index:04X}:1"))
+            layout.size_checks.append(SizeCheck(f"sizeof({qualified})",
+                                                storage_bytes(first) * len(member.entries),
+                                                f"0x{first.index:04X}:1..{len(member.entries)}"))
+
+
+def plan_layout(device: Device) -> Layout:
+    values, constants = Block(VALUES), Block(CONSTANTS)
+    for obj in device.objects:
+        for block, rom in ((values, False), (constants, True)):
+            member = _object_member(obj, rom)
+            if member is not None:
+                block.members.append(member)
+    layout = Layout(values, constants)
+    _record_block(values, layout)
+    _record_block(constants, layout)
+    for entry in device.all_entries():
+        layout.offsets.setdefault((entry.index, entry.sub), "0")  # DOMAINs
+    return layout

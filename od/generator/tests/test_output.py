@@ -1,0 +1,280 @@
+"""The generated C++ text, the files written and the command line."""
+
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+import zlib
+
+from cpp_literals import c_string, float32_literal, integer_literal
+from data_types import DATA_TYPES
+from tests.helpers import (EXAMPLE_EDS, GENERATOR_DIR, MINIMAL_EDS, eds, generate_example,
+                           parse_file, run_generator, run_text)
+
+T = {t.eds_name: t for t in DATA_TYPES.values()}
+
+
+class ExampleOutputTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.files = generate_example()
+        cls.hpp = cls.files["example_od.hpp"]
+        cls.cpp = cls.files["example_od.cpp"]
+        cls.names = cls.files["example_od_names.cpp"]
+
+    def test_exactly_three_files(self):
+        self.assertEqual(sorted(self.files),
+                         ["example_od.cpp", "example_od.hpp", "example_od_names.cpp"])
+
+    def test_header_includes_and_namespace(self):
+        self.assertEqual(re.findall(r"#include .*", self.hpp),
+                         ["#include <stddef.h>", "#include <stdint.h>",
+                          '#include "costa/od/definition.hpp"'])
+        self.assertIn("#pragma once", self.hpp)
+        self.assertIn("namespace costa::gen::example {", self.hpp)
+        self.assertIn("extern const costa::od::Definition kDefinition;", self.hpp)
+        self.assertIn("extern const costa::od::NameTable kNames;", self.hpp)
+
+    def test_member_naming(self):
+        for declaration in (
+                "uint16_t x1017_producer_heartbeat_time;",
+                "struct X1018IdentityObject {",
+                "X1018IdentityObject x1018_identity_object;",
+                "uint32_t vendor_id;",
+                "uint8_t number_of_errors;",
+                "uint32_t item[4];",               # 0x1003 subs 1..4
+                "uint16_t default_6;",             # keyword -> _<sub>
+                "uint16_t default_7;",             # collision -> _<sub>
+                "uint8_t s2nd_value;",             # leading digit -> s
+                "uint16_t element_2;",             # mixed array: individual members
+                "char item[2][5];",                # string array: capacity 4 + NUL
+                "char x2003_serial_text[21];",
+                "uint8_t x2004_octets[6];",
+                "char x1008_manufacturer_device_name[14];",
+                "uint8_t x2005_packed_octets[3];",
+                "int16_t item[2];",                # const compact array in Constants
+                "struct X1A00Tpdo1MappingParameter {"):
+            with self.subTest(declaration=declaration):
+                self.assertIn(declaration, self.hpp)
+        self.assertNotIn("x2006", self.hpp)  # DOMAINs have no storage
+        self.assertNotIn("x2007", self.hpp)
+
+    def test_const_and_ram_split(self):
+        values, constants = self.hpp.split("struct Constants {")
+        self.assertIn("uint32_t x1000_device_type;", constants)
+        self.assertNotIn("x1000_device_type", values)
+        self.assertIn("uint16_t element;  // sub 1", constants)
+        self.assertNotIn("uint16_t element;", values)
+
+    def test_capacity(self):
+        for line in ("static constexpr uint16_t kRpdoCount = 2;",
+                     "static constexpr uint16_t kTpdoCount = 1;",
+                     "static constexpr uint16_t kLargestValue = 20;",
+                     "static constexpr uint8_t kHeartbeatConsumers = 3;",
+                     "static constexpr uint8_t kErrorHistory = 4;",
+                     "static constexpr uint16_t kObjectCount = 31;"):
+            self.assertIn(line, self.hpp)
+
+    def test_sub_entry_rows(self):
+        self.assertIn(
+            "{0, costa::od::DataType::kUnsigned16, costa::od::kReadable | costa::od::kWritable"
+            " | costa::od::kHasLimits, 2, costa::od::kGroupCommunication, "
+            "offsetof(Values, x1017_producer_heartbeat_time), &kLimits[0]},", self.cpp)
+        self.assertIn(
+            "{1, costa::od::DataType::kUnsigned32, costa::od::kReadable, 4, "
+            "costa::od::kGroupNone, offsetof(Values, x1018_identity_object) + "
+            "offsetof(Values::X1018IdentityObject, vendor_id), nullptr},", self.cpp)
+        self.assertIn(
+            "offsetof(Values, x1016_consumer_heartbeat_time) + offsetof(Values::"
+            "X1016ConsumerHeartbeatTime, item) + 2 * sizeof(uint32_t), nullptr},", self.cpp)
+        self.assertIn("+ 1 * sizeof(char[5]), nullptr},", self.cpp)
+        self.assertIn(
+            "{0, costa::od::DataType::kUnsigned8, costa::od::kReadable | costa::od::kInRom, 1,"
+            " costa::od::kGroupNone, offsetof(Constants, x1018_identity_object) + "
+            "offsetof(Constants::X1018IdentityObject, highest_sub_index_supported), nullptr},",
+            self.cpp)
+        self.assertIn("{0, costa::od::DataType::kDomain, costa::od::kReadable | "
+                      "costa::od::kWritable, 0, costa::od::kGroupNone, 0, nullptr},", self.cpp)
+        self.assertIn("costa::od::kReadable | costa::od::kWritable | costa::od::kNodeIdRelative"
+                      ", 4, costa::od::kGroupCommunication, offsetof(Values, x1014_cob_id_emcy)",
+                      self.cpp)
+        self.assertIn("costa::od::kGroupLss", self.cpp)
+        self.assertIn(", 1, 7, offsetof(Values, x2009_lss_settings)", self.cpp)
+
+    def test_objects_sorted(self):
+        rows = re.findall(r"\{0x([0-9A-F]{4}), costa::od::ObjectCode::(\w+), (\d+), kSubs_",
+                          self.cpp)
+        self.assertEqual(len(rows), 31)
+        self.assertEqual([r[0] for r in rows], sorted(r[0] for r in rows))
+        self.assertIn(("1016", "kArray", "4"), rows)
+        self.assertIn(("1018", "kRecord", "5"), rows)
+        self.assertIn(("2006", "kDomain", "1"), rows)
+        self.assertIn(("1000", "kVar", "1"), rows)
+
+    def test_limits_table(self):
+        self.assertIn("{0xFFFFFFFFFFFFFF9CULL, 0x0000000000000064ULL},", self.cpp)  # int8
+        self.assertIn("{0xBFF8000000000000ULL, 0x412E848000000000ULL},", self.cpp)  # real32
+
+    def test_default_literals(self):
+        for literal in ("(-2147483647 - 1),", "(-9223372036854775807LL - 1),",
+                        "0xFFFFFFFFFFFFFFFFULL,", "3.14159f,", "-0.0025,", "-32768,",
+                        '"Costa \\"v1\\"\\\\\\?",', '"Costa Example",',
+                        "{0x01u, 0x02u, 0xA0u, 0xFFu, 0x00u, 0x00u},", '{"ab", ""},',
+                        "{-7, -7},", "0x00000080u,  // x1014_cob_id_emcy"):
+            with self.subTest(literal=literal):
+                self.assertIn(literal, self.cpp)
+
+    def test_definition(self):
+        device, _ = parse_file(EXAMPLE_EDS)
+        rows = "".join(f"{e.index:04X}.{e.sub:02X}:{e.data_type.code:04X}:{e.size}:{e.group}\n"
+                       for e in device.all_entries() if e.group)
+        layout = zlib.crc32(rows.encode("ascii"))
+        self.assertIn("const costa::od::Definition kDefinition = {\n    kObjects,\n    31,\n"
+                      "    &kConstants,\n    &kDefaults,\n    sizeof(Values),\n"
+                      f"    0x{layout:08X}u,\n    \"Costa example device\",\n}};", self.cpp)
+
+    def test_size_checks(self):
+        self.assertIn('static_assert(sizeof(Values::x2003_serial_text) == 21, '
+                      '"size of 0x2003:0");', self.cpp)
+        self.assertIn("static_assert(sizeof(Values::X1003PreDefinedErrorField::item[0]) == 4",
+                      self.cpp)
+        self.assertIn("static_assert(sizeof(Values::X1003PreDefinedErrorField::item) == 16",
+                      self.cpp)
+
+    def test_names(self):
+        self.assertIn('{0x1018, 1, "Identity object.Vendor-ID"},', self.names)
+        self.assertIn('{0x1000, 0, "Device type"},', self.names)
+        self.assertIn('{0x1016, 1, "Consumer heartbeat time.First consumer"},', self.names)
+        rows = re.findall(r"\{0x([0-9A-F]{4}), (\d+), \"", self.names)
+        keys = [(int(i, 16), int(s)) for i, s in rows]
+        self.assertEqual(keys, sorted(keys))
+        self.assertIn(f"kNames = {{kNameRows, {len(rows)}}};", self.names)
+
+    def test_no_paths_or_times(self):
+        for text in self.files.values():
+            self.assertNotIn(GENERATOR_DIR, text)
+            self.assertNotIn("/tmp", text)
+            self.assertIn("from example.eds.", text.splitlines()[0])
+
+
+class LayoutIdTest(unittest.TestCase):
+    BASE = eds("""
+        [1000]
+        ParameterName=Device type
+        DataType=0x0007
+        AccessType=const
+        [2000]
+        ParameterName=Stored
+        DataType={stored}
+        AccessType=rw
+        [2001]
+        ParameterName=Volatile
+        DataType={volatile}
+        AccessType=ro
+        """)
+
+    def layout_id(self, stored, volatile):
+        result = run_text(self.BASE.format(stored=stored, volatile=volatile))
+        source = result.files["test_od.cpp"]
+        return re.search(r"sizeof\(Values\),\n +0x([0-9A-F]{8})u,", source).group(1)
+
+    def test_layout_id_follows_stored_entries_only(self):
+        reference = self.layout_id("0x0006", "0x0006")
+        self.assertEqual(reference, self.layout_id("0x0006", "0x0007"))
+        self.assertNotEqual(reference, self.layout_id("0x0007", "0x0006"))
+
+
+class SmallOutputTest(unittest.TestCase):
+    def test_empty_blocks_get_a_placeholder(self):
+        result = run_text(eds("""
+            [1000]
+            ParameterName=Device type
+            DataType=0x0007
+            AccessType=const
+            """))
+        self.assertEqual(result.status, 0)
+        header = result.files["test_od.hpp"]
+        self.assertIn("struct Values {\n  uint8_t unused_;", header)
+        self.assertIn("0u,  // unused_", result.files["test_od.cpp"])
+        self.assertIn('"test",', result.files["test_od.cpp"])  # no ProductName
+        self.assertIn("kLargestValue = 4;", header)
+        self.assertIn("kHeartbeatConsumers = 0;", header)
+        self.assertIn("kErrorHistory = 0;", header)
+        self.assertNotIn("kLimits", result.files["test_od.cpp"])
+
+    def test_literal_helpers(self):
+        self.assertEqual(c_string(b'a"b\\c?\n\x01\xe9'), '"a\\"b\\\\c\\?\\012\\001\\351"')
+        self.assertEqual(float32_literal(0.5), "0.5f")
+        self.assertEqual(float32_literal(1e20), "1e+20f")
+        self.assertEqual(float32_literal(3.0), "3.0f")
+        self.assertEqual(integer_literal(-128, T["INTEGER8"]), "-128")
+        self.assertEqual(integer_literal(255, T["UNSIGNED8"]), "255u")
+        self.assertEqual(integer_literal(5, T["INTEGER64"]), "5LL")
+
+
+class FilesTest(unittest.TestCase):
+    def test_reproducible(self):
+        with tempfile.TemporaryDirectory() as first, tempfile.TemporaryDirectory() as second:
+            one = run_generator(EXAMPLE_EDS, "example", first)
+            two = run_generator(EXAMPLE_EDS, "example", second)
+        self.assertEqual(one.status, 0)
+        self.assertEqual(one.files, two.files)
+
+    def test_unchanged_files_are_not_rewritten(self):
+        with tempfile.TemporaryDirectory() as out:
+            self.assertEqual(run_generator(MINIMAL_EDS, "minimal", out).status, 0)
+            paths = [os.path.join(out, name) for name in sorted(os.listdir(out))]
+            for path in paths:
+                os.utime(path, (1000000000, 1000000000))
+            self.assertEqual(run_generator(MINIMAL_EDS, "minimal", out).status, 0)
+            self.assertEqual([os.stat(p).st_mtime for p in paths], [1000000000.0] * 3)
+            self.assertEqual(sorted(os.listdir(out)), [
+                "minimal_od.cpp", "minimal_od.hpp", "minimal_od_names.cpp"])
+
+    def test_warnings_do_not_fail(self):
+        result = run_text(eds("""
+            [2000]
+            ParameterName=Value
+            DataType=0x0005
+            AccessType=rw
+            DefaultValue=$NODEID+200
+            """))
+        self.assertEqual(result.status, 0)
+        self.assertEqual(len(result.stderr), 1)
+        self.assertRegex(result.stderr[0], r"test\.eds:5: warning: ")
+        self.assertEqual(len(result.files), 3)
+
+    def test_errors_leave_existing_outputs_alone(self):
+        with tempfile.TemporaryDirectory() as directory:
+            path = os.path.join(directory, "bad.eds")
+            with open(path, "w", encoding="utf-8") as stream:
+                stream.write("[1000]\nParameterName=x\nDataType=0x77\nAccessType=ro\n")
+            out = os.path.join(directory, "out")
+            result = run_generator(path, "bad", out)
+            self.assertEqual(result.status, 1)
+            self.assertEqual(result.stderr, [f"{path}:3: error: unknown data type 0x0077"])
+            self.assertFalse(os.path.exists(out))
+
+    def test_command_line(self):
+        with tempfile.TemporaryDirectory() as out:
+            script = os.path.join(GENERATOR_DIR, "costa_odgen.py")
+            done = subprocess.run([sys.executable, script, "--eds", MINIMAL_EDS, "--name", "solo",
+                                   "--out-dir", out], capture_output=True, text=True)
+            self.assertEqual((done.returncode, done.stderr), (0, ""))
+            self.assertEqual(sorted(os.listdir(out)),
+                             ["solo_od.cpp", "solo_od.hpp", "solo_od_names.cpp"])
+            bad = subprocess.run([sys.executable, script, "--eds", MINIMAL_EDS, "--name",
+                                  "not-a-name", "--out-dir", out], capture_output=True, text=True)
+            self.assertEqual(bad.returncode, 2)
+            self.assertIn("not a C++ identifier", bad.stderr)
+            missing = subprocess.run([sys.executable, script, "--eds", "/nonexistent.eds",
+                                      "--name", "x", "--out-dir", out], capture_output=True,
+                                     text=True)
+            self.assertEqual(missing.returncode, 1)
+            self.assertIn("/nonexistent.eds: error: cannot read", missing.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()

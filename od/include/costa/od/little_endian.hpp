@@ -1,0 +1,44 @@
+// Little-endian encoding of integers, the byte order of every CANopen value on the wire.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+namespace costa {
+
+/// Writes the low `length` bytes of `value`, least significant first. `length` <= 8.
+inline void storeLittleEndian(uint8_t* destination, uint64_t value, size_t length) noexcept {
+  for (size_t i = 0; i < length; ++i) {
+    destination[i] = static_cast<uint8_t>(value >> (8U * i));
+  }
+}
+
+/// Reads `length` bytes, least significant first, zero-extended. `length` <= 8.
+inline uint64_t loadLittleEndian(const uint8_t* source, size_t length) noexcept {
+  uint64_t value = 0;
+  for (size_t i = 0; i < length; ++i) {
+    value |= static_cast<uint64_t>(source[i]) << (8U * i);
+  }
+  return value;
+}
+
+inline uint16_t loadU16(const uint8_t* source) noexcept {
+  return static_cast<uint16_t>(loadLittleEndian(source, 2));
+}
+
+inline uint32_t loadU32(const uint8_t* source) noexcept {
+  return static_cast<uint32_t>(loadLittleEndian(source, 4));
+}
+
+/// Sign-extends the low `length` bytes of `raw`. `length` in 1..8.
+inline int64_t signExtend(uint64_t raw, size_t length) noexcept {
+  if (length >= 8U) {
+    return static_cast<int64_t>(raw);
+  }
+  const uint64_t sign = uint64_t{1} << (8U * length - 1U);
+  const uint64_t mask = (uint64_t{1} << (8U * length)) - 1U;
+  raw &= mask;
+  return (raw & sign) != 0U ? static_cast<int64_t>(raw | ~mask) : static_cast<int64_t>(raw);
+}
+
+}  // namespace costa

@@ -1,0 +1,97 @@
+// One node's object dictionary: the ROM definition plus the RAM block of variable values.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "costa/od/abort_code.hpp"
+#include "costa/od/definition.hpp"
+
+namespace costa::od {
+
+/// A located sub-entry.
+struct EntryRef {
+  const Object* object = nullptr;
+  const SubEntry* entry = nullptr;
+  bool valid() const noexcept { return entry != nullptr; }
+  uint16_t index() const noexcept { return object->index; }
+  uint8_t subIndex() const noexcept { return entry->subIndex; }
+};
+
+/// Reads and writes values by index and sub-index, with the checks every writer must pass
+/// (length, limits, boolean range). Access rights (ro/wo) and side effects are not checked here:
+/// those belong to the services that act for a remote client (SDO, PDO).
+///
+/// Owns nothing: the caller supplies the RAM block (`Definition::valuesSize` bytes, aligned for
+/// any scalar). No allocation; every operation is O(log n) in the number of objects or better.
+/// Not thread-safe: call from the context that runs the node.
+class ObjectDictionary {
+ public:
+  ObjectDictionary(const Definition& definition, void* values) noexcept;
+
+  const Definition& definition() const noexcept { return *definition_; }
+  void* values() noexcept { return values_; }
+  const void* values() const noexcept { return values_; }
+
+  /// Node-id used for `$NODEID` defaults and constants. Set by the node at reset communication.
+  void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
+  uint8_t nodeId() const noexcept { return nodeId_; }
+
+  /// Locates an object; nullptr when absent. O(log n).
+  const Object* findObject(uint16_t index) const noexcept;
+  /// Locates a sub-entry; fails with kNoObject or kNoSubIndex.
+  AbortCode find(uint16_t index, uint8_t subIndex, EntryRef* out) const noexcept;
+  /// Locates a sub-entry; invalid ref when absent.
+  EntryRef find(uint16_t index, uint8_t subIndex) const noexcept;
+
+  /// Size in bytes of the current value: the type size, the string length up to the first NUL
+  /// for VISIBLE_STRING, 0 for DOMAIN (whose data lives with the application).
+  size_t valueSize(const SubEntry& entry) const noexcept;
+
+  /// Copies up to `capacity` bytes of the value's wire representation (little-endian),
+  /// starting at byte `offset`, into `destination`. Returns the number of bytes copied.
+  size_t read(const SubEntry& entry, size_t offset, uint8_t* destination,
+              size_t capacity) const noexcept;
+
+  /// Checks a new value in wire representation without storing it: length (kLengthTooHigh,
+  /// kLengthTooLow), BOOLEAN range (kInvalidValue), limits (kValueTooHigh, kValueTooLow).
+  /// ROM entries and DOMAINs fail with kWriteOfReadOnly / kCannotStore.
+  AbortCode check(const SubEntry& entry, const uint8_t* source, size_t length) const noexcept;
+
+  /// check() and, when it passes, stores the value. A VISIBLE_STRING shorter than its
+  /// capacity is padded with zeros.
+  AbortCode write(const SubEntry& entry, const uint8_t* source, size_t length) noexcept;
+
+  /// Numeric value of an integer or boolean entry, widened (signed types sign-extended).
+  /// Returns 0 for other types.
+  uint64_t readUnsigned(const SubEntry& entry) const noexcept;
+  int64_t readSigned(const SubEntry& entry) const noexcept;
+
+  /// Stores a numeric value without any check (the caller knows it is valid). No-op for ROM
+  /// entries and non-integer types.
+  void storeUnsigned(const SubEntry& entry, uint64_t value) noexcept;
+
+  /// Convenience lookups for the stack's own objects: value of (index, sub) or `fallback` when
+  /// absent.
+  uint64_t readUnsigned(uint16_t index, uint8_t subIndex, uint64_t fallback) const noexcept;
+  /// Stores when present; returns false when absent.
+  bool storeUnsigned(uint16_t index, uint8_t subIndex, uint64_t value) noexcept;
+
+  /// Copies defaults into every RAM entry whose index is in [first, last].
+  void restoreDefaults(uint16_t first, uint16_t last) noexcept;
+  /// Copies defaults into every RAM entry of storage group `group`.
+  void restoreGroupDefaults(uint8_t group) noexcept;
+
+  /// Address of a RAM entry's value (nullptr for ROM entries and DOMAINs).
+  uint8_t* ramAddress(const SubEntry& entry) noexcept;
+  const uint8_t* address(const SubEntry& entry) const noexcept;
+
+ private:
+  void restoreEntry(const SubEntry& entry) noexcept;
+
+  const Definition* definition_;
+  uint8_t* values_;
+  uint8_t nodeId_ = 0;
+};
+
+}  // namespace costa::od

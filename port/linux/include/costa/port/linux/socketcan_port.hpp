@@ -1,0 +1,49 @@
+// A raw SocketCAN socket as the node's CAN controller.
+#pragma once
+
+#include <stdint.h>
+
+#include <string>
+
+#include "costa/port/can_port.hpp"
+
+namespace costa::port {
+
+/// Owns one non-blocking CAN_RAW socket bound to an interface. Receives data frames, RTR frames
+/// and error frames (counted, and reported as controller status); transmits without blocking.
+class SocketCanPort final : public CanTransmitter {
+ public:
+  enum class Received { kFrame, kErrorFrame, kNothing, kFailed };
+
+  struct Counters {
+    uint64_t received = 0;
+    uint64_t transmitted = 0;
+    uint64_t refused = 0;      ///< Writes refused by a full queue (retried by the node).
+    uint64_t errorFrames = 0;  ///< Error frames reported by the driver.
+  };
+
+  SocketCanPort() = default;
+  ~SocketCanPort();
+  SocketCanPort(const SocketCanPort&) = delete;
+  SocketCanPort& operator=(const SocketCanPort&) = delete;
+
+  /// Opens and binds the socket. On failure returns false and sets `error` to one line saying
+  /// why (no SocketCAN in the kernel, no such interface, ...).
+  bool open(const std::string& interfaceName, std::string* error);
+  void close() noexcept;
+  int fd() const noexcept { return fd_; }
+
+  bool tryTransmit(const CanFrame& frame) noexcept override;
+
+  /// Reads one frame if one is waiting. Error frames are counted and returned as kErrorFrame
+  /// with their CAN_ERR_* class in `errorClass`.
+  Received receive(CanFrame* frame, uint32_t* errorClass = nullptr) noexcept;
+
+  const Counters& counters() const noexcept { return counters_; }
+
+ private:
+  int fd_ = -1;
+  Counters counters_;
+};
+
+}  // namespace costa::port

@@ -1,0 +1,37 @@
+// Remote access to the dictionary on behalf of a client (SDO) or a PDO: access rights, hooks,
+// then the dictionary's own checks.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "costa/hook_registry.hpp"
+#include "costa/object_hook.hpp"
+#include "costa/od/object_dictionary.hpp"
+
+namespace costa {
+
+class ObjectAccess {
+ public:
+  ObjectAccess(od::ObjectDictionary& dictionary, const HookRegistry& hooks) noexcept
+      : dictionary_(dictionary), hooks_(hooks) {}
+
+  od::ObjectDictionary& dictionary() noexcept { return dictionary_; }
+
+  /// Locates an entry for reading: kNoObject, kNoSubIndex, kReadOfWriteOnly, or the hook's
+  /// refusal. On success the value may be read from the dictionary.
+  AbortCode prepareRead(uint16_t index, uint8_t subIndex, const ReadRequest& request,
+                        od::EntryRef* out) noexcept;
+
+  /// Locates an entry for writing: kNoObject, kNoSubIndex, kWriteOfReadOnly.
+  AbortCode locateForWrite(uint16_t index, uint8_t subIndex, od::EntryRef* out) const noexcept;
+
+  /// Writes a located entry through its hook (or the plain dictionary).
+  AbortCode write(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
+
+ private:
+  od::ObjectDictionary& dictionary_;
+  const HookRegistry& hooks_;
+};
+
+}  // namespace costa

@@ -1,0 +1,37 @@
+#include "costa/object_access.hpp"
+
+namespace costa {
+
+AbortCode ObjectAccess::prepareRead(uint16_t index, uint8_t subIndex, const ReadRequest& request,
+                                    od::EntryRef* out) noexcept {
+  const AbortCode found = dictionary_.find(index, subIndex, out);
+  if (found != AbortCode::kNone) {
+    return found;
+  }
+  if ((out->entry->attributes & od::kReadable) == 0U) {
+    return AbortCode::kReadOfWriteOnly;
+  }
+  ObjectHook* hook = hooks_.find(index);
+  return hook == nullptr ? AbortCode::kNone : hook->prepareRead(dictionary_, *out, request);
+}
+
+AbortCode ObjectAccess::locateForWrite(uint16_t index, uint8_t subIndex,
+                                       od::EntryRef* out) const noexcept {
+  const AbortCode found = dictionary_.find(index, subIndex, out);
+  if (found != AbortCode::kNone) {
+    return found;
+  }
+  if ((out->entry->attributes & od::kWritable) == 0U) {
+    return AbortCode::kWriteOfReadOnly;
+  }
+  return AbortCode::kNone;
+}
+
+AbortCode ObjectAccess::write(const od::EntryRef& ref, const uint8_t* data,
+                              size_t length) noexcept {
+  ObjectHook* hook = hooks_.find(ref.index());
+  return hook == nullptr ? dictionary_.write(*ref.entry, data, length)
+                         : hook->write(dictionary_, ref, data, length);
+}
+
+}  // namespace costa

@@ -1,0 +1,283 @@
+#include "costa/sdo_server.hpp"
+
+#include <string.h>
+
+#include "costa/cob_ids.hpp"
+#include "costa/od/little_endian.hpp"
+
+namespace costa {
+namespace {
+
+// Client command specifiers (bits 7..5 of byte 0), CiA 301 7.2.4.3.
+constexpr uint8_t kCcsDownloadSegment = 0;
+constexpr uint8_t kCcsInitiateDownload = 1;
+constexpr uint8_t kCcsInitiateUpload = 2;
+constexpr uint8_t kCcsUploadSegment = 3;
+constexpr uint8_t kCcsAbort = 4;
+
+constexpr uint8_t kScsInitiateDownloadResponse = 0x60;
+constexpr uint8_t kScsDownloadSegmentResponse = 0x20;
+constexpr uint8_t kScsInitiateUploadResponse = 0x40;
+constexpr uint8_t kScsAbort = 0x80;
+
+constexpr size_t kSegmentBytes = 7;
+
+// Bytes a download with e=1, s=0 carries: the value's own size when it fits.
+size_t unspecifiedExpeditedLength(const od::SubEntry& entry, const uint8_t* data) {
+  if (od::isNumeric(entry.type) && entry.size <= 4U) {
+    return entry.size;
+  }
+  size_t length = 4;
+  if (entry.type == od::DataType::kVisibleString) {
+    while (length > 0U && data[length - 1U] == 0U) {
+      --length;
+    }
+  }
+  return length;
+}
+
+// Early verdict on an indicated segmented download size.
+AbortCode checkIndicatedSize(const od::SubEntry& entry, size_t size, size_t bufferSize) {
+  if (od::isNumeric(entry.type) || entry.type == od::DataType::kOctetString) {
+    if (size > entry.size) {
+      return AbortCode::kLengthTooHigh;
+    }
+    if (size < entry.size) {
+      return AbortCode::kLengthTooLow;
+    }
+  } else if (entry.type == od::DataType::kVisibleString && size > entry.size) {
+    return AbortCode::kLengthTooHigh;
+  }
+  return size > bufferSize ? AbortCode::kOutOfMemory : AbortCode::kNone;
+}
+
+}  // namespace
+
+SdoServer::SdoServer(ObjectAccess& access, TxQueue& tx, const DeviceProfile& profile,
+                     uint8_t* buffer, size_t bufferSize, Microseconds timeout) noexcept
+    : access_(access),
+      tx_(tx),
+      profile_(profile),
+      buffer_(buffer),
+      bufferSize_(bufferSize),
+      timeout_(timeout) {}
+
+void SdoServer::reset() noexcept {
+  state_ = State::kIdle;
+  deadline_ = kNever;
+}
+
+Microseconds SdoServer::nextDeadline() const noexcept {
+  return state_ == State::kIdle ? kNever : deadline_;
+}
+
+void SdoServer::process(Microseconds now) noexcept {
+  if (state_ != State::kIdle && now >= deadline_) {
+    abortTransfer(AbortCode::kTimeout);
+  }
+}
+
+bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
+  if (frame.dlc != 8U || frame.rtr) {
+    return false;
+  }
+  const uint8_t* request = frame.data;
+  const auto ccs = static_cast<uint8_t>(request[0] >> 5U);
+  if (ccs == kCcsAbort) {
+    reset();
+    return true;
+  }
+  switch (state_) {
+    case State::kIdle:
+      if (ccs == kCcsInitiateDownload) {
+        initiateDownload(request, now);
+      } else if (ccs == kCcsInitiateUpload) {
+        initiateUpload(request, now);
+      } else if (ccs == kCcsDownloadSegment || ccs == kCcsUploadSegment) {
+        sendAbort(0, 0, AbortCode::kCommandSpecifier);  // no transfer to continue
+      } else {
+        sendAbort(loadU16(request + 1), request[3], AbortCode::kCommandSpecifier);
+      }
+      break;
+    case State::kDownloadSegments:
+      if (ccs == kCcsDownloadSegment) {
+        downloadSegment(request, now);
+      } else {
+        abortTransfer(AbortCode::kCommandSpecifier);
+      }
+      break;
+    case State::kUploadSegments:
+      if (ccs == kCcsUploadSegment) {
+        uploadSegment(request, now);
+      } else {
+        abortTransfer(AbortCode::kCommandSpecifier);
+      }
+      break;
+  }
+  return true;
+}
+
+void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexcept {
+  index_ = loadU16(request + 1);
+  subIndex_ = request[3];
+  const AbortCode located = access_.locateForWrite(index_, subIndex_, &ref_);
+  if (located != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, located);
+    return;
+  }
+  const bool expedited = (request[0] & 0x02U) != 0U;
+  const bool sizeIndicated = (request[0] & 0x01U) != 0U;
+  if (expedited) {
+    const size_t length = sizeIndicated ? 4U - ((request[0] >> 2U) & 0x03U)
+                                        : unspecifiedExpeditedLength(*ref_.entry, request + 4);
+    const AbortCode written = access_.write(ref_, request + 4, length);
+    if (written != AbortCode::kNone) {
+      sendAbort(index_, subIndex_, written);
+      return;
+    }
+    const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
+    respond(response);
+    return;
+  }
+  sizeIndicated_ = sizeIndicated;
+  size_ = sizeIndicated ? loadU32(request + 4) : 0U;
+  if (sizeIndicated) {
+    const AbortCode sized = checkIndicatedSize(*ref_.entry, size_, bufferSize_);
+    if (sized != AbortCode::kNone) {
+      sendAbort(index_, subIndex_, sized);
+      return;
+    }
+  }
+  state_ = State::kDownloadSegments;
+  toggle_ = 0;
+  done_ = 0;
+  deadline_ = now + timeout_;
+  const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
+  respond(response);
+}
+
+void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexcept {
+  const auto toggle = static_cast<uint8_t>((request[0] >> 4U) & 0x01U);
+  if (toggle != toggle_) {
+    abortTransfer(AbortCode::kToggleBit);
+    return;
+  }
+  const size_t count = kSegmentBytes - ((request[0] >> 1U) & 0x07U);
+  if (sizeIndicated_ && done_ + count > size_) {
+    abortTransfer(AbortCode::kLengthMismatch);
+    return;
+  }
+  if (done_ + count > bufferSize_) {
+    abortTransfer(AbortCode::kLengthTooHigh);
+    return;
+  }
+  memcpy(buffer_ + done_, request + 1, count);
+  done_ += count;
+  deadline_ = now + timeout_;
+  if ((request[0] & 0x01U) != 0U) {
+    finishDownload();
+    return;
+  }
+  const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | (toggle_ << 4U))};
+  respond(response);
+  toggle_ ^= 1U;
+}
+
+void SdoServer::finishDownload() noexcept {
+  if (sizeIndicated_ && done_ != size_) {
+    abortTransfer(AbortCode::kLengthMismatch);
+    return;
+  }
+  const AbortCode written = access_.write(ref_, buffer_, done_);
+  if (written != AbortCode::kNone) {
+    abortTransfer(written);
+    return;
+  }
+  const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | (toggle_ << 4U))};
+  respond(response);
+  reset();
+}
+
+void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcept {
+  index_ = loadU16(request + 1);
+  subIndex_ = request[3];
+  ReadRequest details;
+  memcpy(details.requestData, request + 4, 4);
+  const AbortCode prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
+  if (prepared != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, prepared);
+    return;
+  }
+  const od::ObjectDictionary& dictionary = access_.dictionary();
+  const size_t size = dictionary.valueSize(*ref_.entry);
+  uint8_t response[8] = {0, request[1], request[2], subIndex_};
+  if (size >= 1U && size <= 4U) {
+    dictionary.read(*ref_.entry, 0, response + 4, 4);
+    response[0] =
+        profile_.expeditedUpload == ExpeditedUploadFormat::kSizeIndicated
+            ? static_cast<uint8_t>(kScsInitiateUploadResponse | ((4U - size) << 2U) | 0x03U)
+            : static_cast<uint8_t>(kScsInitiateUploadResponse | 0x02U);
+    respond(response);
+    return;
+  }
+  snapshot_ = size <= bufferSize_;
+  if (snapshot_) {
+    dictionary.read(*ref_.entry, 0, buffer_, size);
+  }
+  size_ = size;
+  done_ = 0;
+  toggle_ = 0;
+  state_ = State::kUploadSegments;
+  deadline_ = now + timeout_;
+  response[0] = kScsInitiateUploadResponse | 0x01U;
+  storeLittleEndian(response + 4, size, 4);
+  respond(response);
+}
+
+void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept {
+  const auto toggle = static_cast<uint8_t>((request[0] >> 4U) & 0x01U);
+  if (toggle != toggle_) {
+    abortTransfer(AbortCode::kToggleBit);
+    return;
+  }
+  const size_t remaining = size_ - done_;
+  const size_t count = remaining < kSegmentBytes ? remaining : kSegmentBytes;
+  const bool last = count == remaining;
+  uint8_t response[8] = {
+      static_cast<uint8_t>((toggle_ << 4U) | ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U))};
+  if (snapshot_) {
+    memcpy(response + 1, buffer_ + done_, count);
+  } else {
+    access_.dictionary().read(*ref_.entry, done_, response + 1, count);
+  }
+  done_ += count;
+  respond(response);
+  if (last) {
+    reset();
+  } else {
+    toggle_ ^= 1U;
+    deadline_ = now + timeout_;
+  }
+}
+
+void SdoServer::abortTransfer(AbortCode code) noexcept {
+  sendAbort(index_, subIndex_, code);
+  reset();
+}
+
+void SdoServer::sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept {
+  uint8_t response[8] = {kScsAbort, static_cast<uint8_t>(index), static_cast<uint8_t>(index >> 8U),
+                         subIndex};
+  storeLittleEndian(response + 4, static_cast<uint32_t>(code), 4);
+  respond(response);
+}
+
+void SdoServer::respond(const uint8_t (&data)[8]) noexcept {
+  CanFrame frame;
+  frame.id = cob::kSdoTxBase + nodeId_;
+  frame.dlc = 8;
+  memcpy(frame.data, data, 8);
+  tx_.push(frame);
+}
+
+}  // namespace costa

@@ -1,0 +1,19 @@
+// The example device as a firmware image (link check of the freestanding core).
+#include "dummy_can.hpp"
+#include "example_target.hpp"
+
+costa::firmware::Mailbox costaMailbox;
+
+int main() {
+  costa::firmware::DummyCan can(costaMailbox);
+  costa::example::ExampleTarget target(can, 1);
+  target.start(0);
+  for (;;) {
+    const costa::Microseconds now = static_cast<costa::Microseconds>(costaMailbox.ticks) * 1000U;
+    costa::CanFrame frame;
+    while (can.receive(&frame)) {
+      target.onFrame(frame, now);
+    }
+    target.process(now);
+  }
+}

@@ -1,0 +1,56 @@
+// A device as the Linux slave runs it: a node, the behaviour behind it, and its names.
+#pragma once
+
+#include <stdint.h>
+
+#include <memory>
+#include <string>
+
+#include "costa/node.hpp"
+#include "costa/od/definition.hpp"
+#include "costa/port/can_port.hpp"
+
+namespace costa::host {
+
+/// Options a device may use when it is created.
+struct TargetOptions {
+  int nodeId = -1;          ///< --node-id, or -1 for the device's own default.
+  std::string storagePath;  ///< --storage, or empty.
+};
+
+class DeviceTarget {
+ public:
+  virtual ~DeviceTarget() = default;
+  virtual void start(Microseconds now) = 0;
+  virtual void onFrame(const CanFrame& frame, Microseconds now) = 0;
+  /// Runs node and device; returns the next deadline.
+  virtual Microseconds process(Microseconds now) = 0;
+  virtual Node& node() = 0;
+  /// Names of the dictionary's entries (for traces).
+  virtual const od::NameTable* names() const = 0;
+};
+
+/// Adapts a device composition (a class with start/onFrame/process/node, as firmware uses it)
+/// to DeviceTarget.
+template <typename Composition>
+class HostedTarget final : public DeviceTarget {
+ public:
+  template <typename... Args>
+  explicit HostedTarget(const od::NameTable* names, Args&&... args)
+      : composition_(std::forward<Args>(args)...), names_(names) {}
+
+  void start(Microseconds now) override { composition_.start(now); }
+  void onFrame(const CanFrame& frame, Microseconds now) override {
+    composition_.onFrame(frame, now);
+  }
+  Microseconds process(Microseconds now) override { return composition_.process(now); }
+  Node& node() override { return composition_.node(); }
+  const od::NameTable* names() const override { return names_; }
+  Composition& composition() { return composition_; }
+
+ private:
+  Composition composition_;
+  const od::NameTable* names_;
+};
+
+}  // namespace costa::host

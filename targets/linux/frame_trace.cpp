@@ -1,0 +1,190 @@
+#include "frame_trace.hpp"
+
+#include <cstdio>
+#include <cstring>
+
+#include "costa/od/little_endian.hpp"
+
+namespace costa::host {
+namespace {
+
+std::string hex(uint64_t value, int digits) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "0x%0*llX", digits, static_cast<unsigned long long>(value));
+  return buffer;
+}
+
+std::string quoted(const uint8_t* data, size_t length) {
+  std::string text = "\"";
+  for (size_t i = 0; i < length; ++i) {
+    const char c = static_cast<char>(data[i]);
+    if (c >= 0x20 && c < 0x7F && c != '"' && c != '\\') {
+      text += c;
+    } else {
+      char buffer[8];
+      std::snprintf(buffer, sizeof(buffer), "\\x%02X", data[i]);
+      text += buffer;
+    }
+  }
+  return text + "\"";
+}
+
+std::string bytes(const uint8_t* data, size_t length) {
+  std::string text;
+  for (size_t i = 0; i < length; ++i) {
+    char buffer[8];
+    std::snprintf(buffer, sizeof(buffer), i == 0 ? "%02X" : " %02X", data[i]);
+    text += buffer;
+  }
+  return text;
+}
+
+const char* stateName(uint8_t value) {
+  switch (value & 0x7FU) {
+    case 0x00: return "boot-up";
+    case 0x04: return "stopped";
+    case 0x05: return "operational";
+    case 0x7F: return "pre-operational";
+    default: return "unknown state";
+  }
+}
+
+}  // namespace
+
+FrameTracer::FrameTracer(const od::ObjectDictionary* dictionary, const od::NameTable* names)
+    : dictionary_(dictionary), names_(names) {}
+
+std::string FrameTracer::nameOf(uint16_t index, uint8_t subIndex) const {
+  if (names_ == nullptr) {
+    return "";
+  }
+  for (uint32_t i = 0; i < names_->count; ++i) {
+    const od::EntryName& row = names_->names[i];
+    if (row.index == index && row.subIndex == subIndex) {
+      return row.name;
+    }
+  }
+  return "";
+}
+
+std::string FrameTracer::entryText(uint16_t index, uint8_t subIndex) const {
+  char buffer[16];
+  std::snprintf(buffer, sizeof(buffer), "0x%04X:%02X", index, subIndex);
+  return buffer;
+}
+
+std::string FrameTracer::formatValue(uint16_t index, uint8_t subIndex, const uint8_t* data,
+                                     size_t length, bool local) const {
+  const od::EntryRef ref =
+      (local && dictionary_ != nullptr) ? dictionary_->find(index, subIndex) : od::EntryRef{};
+  if (!ref.valid()) {
+    return bytes(data, length);
+  }
+  const od::SubEntry& entry = *ref.entry;
+  if (entry.type == od::DataType::kVisibleString) {
+    return quoted(data, length);
+  }
+  if (!od::isNumeric(entry.type) || length < entry.size) {
+    return bytes(data, length);
+  }
+  const uint64_t raw = loadLittleEndian(data, entry.size);
+  char buffer[64];
+  if (od::isSigned(entry.type)) {
+    std::snprintf(buffer, sizeof(buffer), "%lld",
+                  static_cast<long long>(signExtend(raw, entry.size)));
+  } else if (entry.type == od::DataType::kReal32) {
+    float value = 0.0F;
+    const auto bits = static_cast<uint32_t>(raw);
+    std::memcpy(&value, &bits, 4);
+    std::snprintf(buffer, sizeof(buffer), "%g", static_cast<double>(value));
+  } else if (entry.type == od::DataType::kReal64) {
+    double value = 0.0;
+    std::memcpy(&value, &raw, 8);
+    std::snprintf(buffer, sizeof(buffer), "%g", value);
+  } else {
+    std::snprintf(buffer, sizeof(buffer), "%llu (%s)", static_cast<unsigned long long>(raw),
+                  hex(raw, static_cast<int>(entry.size * 2U)).c_str());
+  }
+  return buffer;
+}
+
+std::string FrameTracer::describe(const CanFrame& frame, uint8_t localNodeId) {
+  if (frame.extended) {
+    return "29-bit frame (not CANopen)";
+  }
+  const uint32_t id = frame.id;
+  if (id == 0x000) {
+    return describeNmt(frame);
+  }
+  if (id == 0x080) {
+    return frame.dlc >= 1U ? "SYNC counter " + std::to_string(frame.data[0]) : "SYNC";
+  }
+  if (id > 0x080 && id <= 0x0FF) {
+    return describeEmcy(frame);
+  }
+  if (id >= 0x180 && id <= 0x57F) {
+    return frame.rtr ? "PDO request (RTR)" : "PDO";
+  }
+  if (id > 0x580 && id <= 0x5FF) {
+    return describeSdoResponse(frame, id - 0x580U == localNodeId);
+  }
+  if (id > 0x600 && id <= 0x67F) {
+    return describeSdoRequest(frame, id - 0x600U == localNodeId);
+  }
+  if (id > 0x700 && id <= 0x77F) {
+    return describeErrorControl(frame);
+  }
+  if (id == 0x7E5 || id == 0x7E4) {
+    return describeLss(frame, id == 0x7E5);
+  }
+  return "";
+}
+
+std::string FrameTracer::describeNmt(const CanFrame& frame) const {
+  if (frame.dlc != 2U) {
+    return "NMT (malformed, ignored)";
+  }
+  const std::string target =
+      frame.data[1] == 0U ? "all nodes" : "node " + std::to_string(frame.data[1]);
+  switch (frame.data[0]) {
+    case 0x01: return "NMT start " + target;
+    case 0x02: return "NMT stop " + target;
+    case 0x80: return "NMT enter pre-operational " + target;
+    case 0x81: return "NMT reset node " + target;
+    case 0x82: return "NMT reset communication " + target;
+    default: return "NMT unknown command " + hex(frame.data[0], 2);
+  }
+}
+
+std::string FrameTracer::describeEmcy(const CanFrame& frame) const {
+  std::string text = "EMCY node " + std::to_string(frame.id - 0x080U);
+  if (frame.dlc >= 3U) {
+    text += " code " + hex(loadU16(frame.data), 4) + " register " + hex(frame.data[2], 2);
+  }
+  if (frame.dlc > 3U) {
+    text += " data " + bytes(frame.data + 3, frame.dlc - 3U);
+  }
+  return text;
+}
+
+std::string FrameTracer::describeErrorControl(const CanFrame& frame) {
+  const uint32_t node = frame.id - 0x700U;
+  if (frame.rtr) {
+    guardRequested_[node] = 1;
+    return "node guard request";
+  }
+  if (frame.dlc != 1U) {
+    return "error control (malformed)";
+  }
+  if (guardRequested_[node] != 0U) {
+    guardRequested_[node] = 0;
+    return std::string("node guard reply ") + stateName(frame.data[0]) + " toggle " +
+           ((frame.data[0] & 0x80U) != 0U ? "1" : "0");
+  }
+  if (frame.data[0] == 0U) {
+    return "boot-up";
+  }
+  return std::string("heartbeat ") + stateName(frame.data[0]);
+}
+
+}  // namespace costa::host

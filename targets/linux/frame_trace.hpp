@@ -1,0 +1,50 @@
+// Decodes CAN frames into one-line descriptions of their CANopen meaning, for --trace.
+#pragma once
+
+#include <stdint.h>
+
+#include <string>
+
+#include "costa/od/definition.hpp"
+#include "costa/od/object_dictionary.hpp"
+#include "costa/port/can_frame.hpp"
+
+namespace costa::host {
+
+/// Remembers what it has seen (an SDO transfer in progress, a guarding request) so that later
+/// frames can be described in context. Values of the local node's objects are shown by type.
+class FrameTracer {
+ public:
+  /// `dictionary` (may be null) is the local node's, used to format values; `names` (may be
+  /// null) to name objects.
+  FrameTracer(const od::ObjectDictionary* dictionary, const od::NameTable* names);
+
+  /// Meaning of `frame` on a bus where the local node has `localNodeId`.
+  std::string describe(const CanFrame& frame, uint8_t localNodeId);
+
+  /// Name of an entry, "" when unknown.
+  std::string nameOf(uint16_t index, uint8_t subIndex) const;
+
+ private:
+  std::string describeNmt(const CanFrame& frame) const;
+  std::string describeEmcy(const CanFrame& frame) const;
+  std::string describeErrorControl(const CanFrame& frame);
+  std::string describeSdoRequest(const CanFrame& frame, bool local);
+  std::string describeSdoResponse(const CanFrame& frame, bool local);
+  std::string describeLss(const CanFrame& frame, bool fromMaster) const;
+  std::string formatValue(uint16_t index, uint8_t subIndex, const uint8_t* data, size_t length,
+                          bool local) const;
+  std::string entryText(uint16_t index, uint8_t subIndex) const;
+
+  const od::ObjectDictionary* dictionary_;
+  const od::NameTable* names_;
+  uint8_t guardRequested_[128] = {};
+  // Segmented SDO transfer being watched.
+  bool uploading_ = false;
+  bool downloading_ = false;
+  uint16_t index_ = 0;
+  uint8_t subIndex_ = 0;
+  std::string collected_;
+};
+
+}  // namespace costa::host

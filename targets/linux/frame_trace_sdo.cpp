@@ -1,0 +1,149 @@
+// SDO and LSS parts of FrameTracer.
+#include <cstdio>
+
+#include "costa/od/abort_code.hpp"
+#include "costa/od/little_endian.hpp"
+#include "frame_trace.hpp"
+
+namespace costa::host {
+namespace {
+
+std::string hex32(uint32_t value) {
+  char buffer[16];
+  std::snprintf(buffer, sizeof(buffer), "0x%08X", value);
+  return buffer;
+}
+
+std::string abortText(const uint8_t* data, const std::string& entry) {
+  const uint32_t code = loadU32(data + 4);
+  return "SDO abort " + entry + " " + hex32(code) + " (" + describe(static_cast<AbortCode>(code)) +
+         ")";
+}
+
+}  // namespace
+
+std::string FrameTracer::describeSdoRequest(const CanFrame& frame, bool local) {
+  if (frame.rtr || frame.dlc != 8U) {
+    return "SDO request (malformed, ignored)";
+  }
+  const uint8_t* d = frame.data;
+  const uint16_t index = loadU16(d + 1);
+  const uint8_t sub = d[3];
+  const std::string entry = entryText(index, sub);
+  switch (d[0] >> 5U) {
+    case 0: {
+      const size_t count = 7U - ((d[0] >> 1U) & 7U);
+      const bool last = (d[0] & 1U) != 0U;
+      collected_.append(reinterpret_cast<const char*>(d + 1), count);
+      std::string text = "SDO download segment " + formatValue(0, 0, d + 1, count, false);
+      if (last && downloading_) {
+        text += " (last) " + entryText(index_, subIndex_) + " = " +
+                formatValue(index_, subIndex_, reinterpret_cast<const uint8_t*>(collected_.data()),
+                            collected_.size(), local);
+        downloading_ = false;
+      }
+      return text;
+    }
+    case 1: {
+      if ((d[0] & 0x02U) != 0U) {
+        const size_t count = (d[0] & 0x01U) != 0U ? 4U - ((d[0] >> 2U) & 3U) : 4U;
+        return "SDO download " + entry + " = " + formatValue(index, sub, d + 4, count, local);
+      }
+      downloading_ = true;
+      index_ = index;
+      subIndex_ = sub;
+      collected_.clear();
+      return "SDO download " + entry + " segmented" +
+             ((d[0] & 0x01U) != 0U ? ", " + std::to_string(loadU32(d + 4)) + " bytes" : "");
+    }
+    case 2: return "SDO upload " + entry;
+    case 3: return "SDO upload segment request";
+    case 4: uploading_ = downloading_ = false; return abortText(d, entry);
+    case 5: return "SDO block upload request";
+    case 6: return "SDO block download request";
+    default: return "SDO unknown command " + hex32(d[0]);
+  }
+}
+
+std::string FrameTracer::describeSdoResponse(const CanFrame& frame, bool local) {
+  if (frame.rtr || frame.dlc != 8U) {
+    return "SDO response (malformed)";
+  }
+  const uint8_t* d = frame.data;
+  const uint16_t index = loadU16(d + 1);
+  const uint8_t sub = d[3];
+  const std::string entry = entryText(index, sub);
+  const std::string name = nameOf(index, sub);
+  switch (d[0] >> 5U) {
+    case 0: {
+      const size_t count = 7U - ((d[0] >> 1U) & 7U);
+      const bool last = (d[0] & 1U) != 0U;
+      collected_.append(reinterpret_cast<const char*>(d + 1), count);
+      std::string text = "SDO upload segment " + formatValue(0, 0, d + 1, count, false);
+      if (last && uploading_) {
+        text += " (last) " + entryText(index_, subIndex_) + " = " +
+                formatValue(index_, subIndex_, reinterpret_cast<const uint8_t*>(collected_.data()),
+                            collected_.size(), local);
+        uploading_ = false;
+      }
+      return text;
+    }
+    case 1: return "SDO download segment response";
+    case 2: {
+      if ((d[0] & 0x02U) != 0U) {
+        const size_t count = (d[0] & 0x01U) != 0U ? 4U - ((d[0] >> 2U) & 3U) : 4U;
+        return "SDO upload response " + entry + " " + formatValue(index, sub, d + 4, count, local) +
+               (name.empty() ? "" : "  " + name);
+      }
+      uploading_ = true;
+      index_ = index;
+      subIndex_ = sub;
+      collected_.clear();
+      return "SDO upload response " + entry + " segmented, " + std::to_string(loadU32(d + 4)) +
+             " bytes" + (name.empty() ? "" : "  " + name);
+    }
+    case 3: return "SDO download response " + entry + (name.empty() ? "" : "  " + name);
+    case 4: uploading_ = downloading_ = false; return abortText(d, entry);
+    case 5: return "SDO block download response";
+    case 6: return "SDO block upload response";
+    default: return "SDO unknown response";
+  }
+}
+
+std::string FrameTracer::describeLss(const CanFrame& frame, bool fromMaster) const {
+  if (frame.dlc != 8U) {
+    return "LSS (malformed)";
+  }
+  const char* what = nullptr;
+  switch (frame.data[0]) {
+    case 0x04: what = "switch state global"; break;
+    case 0x11: what = "configure node-id"; break;
+    case 0x13: what = "configure bit timing"; break;
+    case 0x15: what = "activate bit timing"; break;
+    case 0x17: what = "store configuration"; break;
+    case 0x40: what = "switch state selective vendor-id"; break;
+    case 0x41: what = "switch state selective product code"; break;
+    case 0x42: what = "switch state selective revision"; break;
+    case 0x43: what = "switch state selective serial number"; break;
+    case 0x44: what = "switch state selective response"; break;
+    case 0x46: what = "identify remote slave vendor-id"; break;
+    case 0x47: what = "identify remote slave product code"; break;
+    case 0x48: what = "identify remote slave revision low"; break;
+    case 0x49: what = "identify remote slave revision high"; break;
+    case 0x4A: what = "identify remote slave serial low"; break;
+    case 0x4B: what = "identify remote slave serial high"; break;
+    case 0x4C: what = "identify non-configured remote slave"; break;
+    case 0x4F: what = "identify slave"; break;
+    case 0x50: what = "identify non-configured slave"; break;
+    case 0x51: what = "fastscan"; break;
+    case 0x5A: what = "inquire vendor-id"; break;
+    case 0x5B: what = "inquire product code"; break;
+    case 0x5C: what = "inquire revision number"; break;
+    case 0x5D: what = "inquire serial number"; break;
+    case 0x5E: what = "inquire node-id"; break;
+    default: what = "unknown command"; break;
+  }
+  return std::string(fromMaster ? "LSS request " : "LSS response ") + what;
+}
+
+}  // namespace costa::host

@@ -1,0 +1,102 @@
+#include "slave_options.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+
+#include "device_registry.hpp"
+
+namespace costa::host {
+namespace {
+
+bool parseNodeId(const std::string& text, int* value) {
+  if (text.empty()) {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const long parsed = std::strtol(text.c_str(), &end, 0);
+  if (errno != 0 || end == nullptr || *end != '\0' || parsed < 1 || parsed > 127) {
+    return false;
+  }
+  *value = static_cast<int>(parsed);
+  return true;
+}
+
+}  // namespace
+
+std::string slaveUsage() {
+  return "usage: costa-slave [--iface NAME] [--node-id N] [--storage FILE] [--trace] DEVICE\n"
+         "\n"
+         "Runs a CANopen slave device on a SocketCAN interface.\n"
+         "\n"
+         "  --iface NAME     CAN interface (default vcan0)\n"
+         "  --node-id N      node-id 1..127 (decimal or 0x hex; default: the device's own)\n"
+         "  --storage FILE   file holding the device's non-volatile parameters\n"
+         "  --trace          print every frame received and sent, with its meaning\n"
+         "  --list-devices   list the devices and exit\n"
+         "  --help           show this help and exit\n"
+         "\n"
+         "DEVICE is one of: " +
+         deviceNames() + "\n";
+}
+
+bool parseSlaveOptions(const std::vector<std::string>& arguments, SlaveOptions* options,
+                       std::string* error) {
+  for (size_t i = 0; i < arguments.size(); ++i) {
+    const std::string& argument = arguments[i];
+    auto value = [&](std::string* out) {
+      if (i + 1U >= arguments.size()) {
+        *error = argument + " needs a value";
+        return false;
+      }
+      *out = arguments[++i];
+      return true;
+    };
+    if (argument == "--help" || argument == "-h") {
+      options->help = true;
+    } else if (argument == "--trace") {
+      options->trace = true;
+    } else if (argument == "--list-devices") {
+      options->listDevices = true;
+    } else if (argument == "--iface") {
+      if (!value(&options->interfaceName)) {
+        return false;
+      }
+    } else if (argument == "--storage") {
+      if (!value(&options->storagePath)) {
+        return false;
+      }
+    } else if (argument == "--node-id") {
+      std::string text;
+      if (!value(&text)) {
+        return false;
+      }
+      if (!parseNodeId(text, &options->nodeId)) {
+        *error = "invalid node-id '" + text + "': expected 1..127";
+        return false;
+      }
+    } else if (!argument.empty() && argument[0] == '-') {
+      *error = "unknown option '" + argument + "' (see --help)";
+      return false;
+    } else if (options->device.empty()) {
+      options->device = argument;
+    } else {
+      *error = "unexpected argument '" + argument + "': only one DEVICE";
+      return false;
+    }
+  }
+  if (options->help || options->listDevices) {
+    return true;
+  }
+  if (options->device.empty()) {
+    *error = "no DEVICE given (one of: " + deviceNames() + ")";
+    return false;
+  }
+  if (findDevice(options->device) == nullptr) {
+    *error = "unknown device '" + options->device + "' (one of: " + deviceNames() + ")";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace costa::host

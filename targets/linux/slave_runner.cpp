@@ -1,0 +1,166 @@
+#include "slave_runner.hpp"
+
+#include <poll.h>
+#include <signal.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "costa/port/linux/monotonic_clock.hpp"
+#include "costa/port/linux/socketcan_port.hpp"
+#include "device_registry.hpp"
+#include "frame_text.hpp"
+#include "frame_trace.hpp"
+
+namespace costa::host {
+namespace {
+
+volatile sig_atomic_t stopRequested = 0;
+
+void onStopSignal(int) {
+  stopRequested = 1;
+}
+
+/// Prints one trace line per frame: time, direction, frame, meaning.
+class Tracer {
+ public:
+  Tracer(bool enabled, port::LinuxMonotonicClock& clock)
+      : enabled_(enabled), clock_(clock), epoch_(clock.nowMicroseconds()) {}
+
+  void attach(DeviceTarget* target) {
+    target_ = target;
+    decoder_ = std::make_unique<FrameTracer>(&target->node().dictionary(), target->names());
+  }
+
+  void line(const char* direction, const CanFrame& frame) {
+    if (!enabled_) {
+      return;
+    }
+    const uint64_t elapsed = clock_.nowMicroseconds() - epoch_;
+    const std::string meaning =
+        decoder_ ? decoder_->describe(frame, target_->node().nodeId()) : std::string();
+    std::printf("%5llu.%06llu %s %-32s %s\n", static_cast<unsigned long long>(elapsed / 1000000U),
+                static_cast<unsigned long long>(elapsed % 1000000U), direction,
+                formatFrame(frame).c_str(), meaning.c_str());
+    std::fflush(stdout);
+  }
+
+ private:
+  bool enabled_;
+  port::LinuxMonotonicClock& clock_;
+  uint64_t epoch_;
+  DeviceTarget* target_ = nullptr;
+  std::unique_ptr<FrameTracer> decoder_;
+};
+
+/// The node's transmitter: the socket, with every accepted frame traced.
+class TracedSocket final : public CanTransmitter {
+ public:
+  TracedSocket(port::SocketCanPort& socket, Tracer& tracer) : socket_(socket), tracer_(tracer) {}
+  bool tryTransmit(const CanFrame& frame) noexcept override {
+    if (!socket_.tryTransmit(frame)) {
+      return false;
+    }
+    tracer_.line("tx", frame);
+    return true;
+  }
+
+ private:
+  port::SocketCanPort& socket_;
+  Tracer& tracer_;
+};
+
+int timeoutMilliseconds(Microseconds deadline, Microseconds now, bool txPending) {
+  Microseconds wait = deadline <= now ? 0U : deadline - now;
+  if (txPending && wait > 1000U) {
+    wait = 1000U;  // the controller refused frames: offer them again soon
+  }
+  const Microseconds limit = 1000000U;  // wake at least every second
+  if (wait > limit) {
+    wait = limit;
+  }
+  return static_cast<int>((wait + 999U) / 1000U);
+}
+
+}  // namespace
+
+int runSlave(const SlaveOptions& options) {
+  port::SocketCanPort socket;
+  std::string error;
+  if (!socket.open(options.interfaceName, &error)) {
+    std::fprintf(stderr, "costa-slave: %s\n", error.c_str());
+    return 1;
+  }
+  port::LinuxMonotonicClock clock;
+  Tracer tracer(options.trace, clock);
+  TracedSocket transmitter(socket, tracer);
+  TargetOptions targetOptions;
+  targetOptions.nodeId = options.nodeId;
+  targetOptions.storagePath = options.storagePath;
+  std::unique_ptr<DeviceTarget> target =
+      findDevice(options.device)->create(transmitter, targetOptions, &error);
+  if (!target) {
+    std::fprintf(stderr, "costa-slave: %s\n", error.c_str());
+    return 1;
+  }
+  tracer.attach(target.get());
+
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  sigset_t blocked;
+  sigset_t waiting;
+  sigemptyset(&blocked);
+  sigaddset(&blocked, SIGINT);
+  sigaddset(&blocked, SIGTERM);
+  sigprocmask(SIG_BLOCK, &blocked, &waiting);
+  sigdelset(&waiting, SIGINT);
+  sigdelset(&waiting, SIGTERM);
+
+  target->start(clock.nowMicroseconds());
+  std::fprintf(stderr, "costa-slave: %s on %s, node-id %u\n", options.device.c_str(),
+               options.interfaceName.c_str(), target->node().nodeId());
+
+  while (stopRequested == 0) {
+    const Microseconds now = clock.nowMicroseconds();
+    const Microseconds deadline = target->process(now);
+    const int timeout =
+        timeoutMilliseconds(deadline, clock.nowMicroseconds(), target->node().txPending());
+    pollfd descriptor{socket.fd(), POLLIN, 0};
+    const timespec wait{timeout / 1000, static_cast<long>(timeout % 1000) * 1000000L};
+    const int ready = ppoll(&descriptor, 1, &wait, &waiting);  // signals arrive only here
+    if (ready < 0 && errno != EINTR) {
+      std::fprintf(stderr, "costa-slave: poll failed: %s\n", std::strerror(errno));
+      return 1;
+    }
+    if (ready > 0) {
+      if ((descriptor.revents & (POLLERR | POLLHUP | POLLNVAL)) != 0) {
+        std::fprintf(stderr, "costa-slave: CAN interface %s failed\n",
+                     options.interfaceName.c_str());
+        return 1;
+      }
+      CanFrame frame;
+      for (;;) {
+        const auto received = socket.receive(&frame);
+        if (received == port::SocketCanPort::Received::kFrame) {
+          tracer.line("rx", frame);
+          target->onFrame(frame, clock.nowMicroseconds());
+        } else if (received != port::SocketCanPort::Received::kErrorFrame) {
+          break;
+        }
+      }
+    }
+    if (target->node().txPending()) {
+      target->node().flushTx();
+    }
+  }
+  std::fprintf(stderr, "costa-slave: stopped\n");
+  return 0;
+}
+
+}  // namespace costa::host

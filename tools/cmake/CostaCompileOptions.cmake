@@ -1,0 +1,20 @@
+# Compile options shared by every Costa target.
+#
+# costa_warnings      : the warning set, as errors (all code of the project).
+# costa_freestanding  : what the core must compile with (stack/, od/, port interfaces).
+
+add_library(costa_warnings INTERFACE)
+target_compile_options(costa_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wcast-align
+  -Wold-style-cast -Wnull-dereference -Wdouble-promotion -Wformat=2 -Werror)
+
+add_library(costa_freestanding INTERFACE)
+target_compile_options(costa_freestanding INTERFACE
+  -ffreestanding -fno-exceptions -fno-rtti -fno-threadsafe-statics)
+target_link_libraries(costa_freestanding INTERFACE costa_warnings)
+
+if(COSTA_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all
+                      -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
+endif()
