@@ -3,9 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 
+#include "allocation_guard.hpp"
 #include "costa/od/little_endian.hpp"
+#include "device_target.hpp"
+#include "example_od.hpp"
+#include "example_target.hpp"
 #include "in_process_bus.hpp"
 #include "transcript_player.hpp"
 
@@ -14,9 +19,18 @@
 
 namespace costa::test {
 
+/// An example device built with explicit settings (for profile-specific behaviour).
+inline InProcessBus::Factory exampleWith(const NodeSettings& settings) {
+  return [settings](CanTransmitter& can) -> std::unique_ptr<host::DeviceTarget> {
+    return std::make_unique<host::HostedTarget<example::ExampleTarget>>(&gen::example::kNames, can,
+                                                                        settings);
+  };
+}
+
 class ExampleNodeTest : public ::testing::Test {
  protected:
   ExampleNodeTest() : bus_("example", 1) {}
+  explicit ExampleNodeTest(const NodeSettings& settings) : bus_(exampleWith(settings)) {}
 
   void SetUp() override { ASSERT_EQ(play("tx 701 [1] 00"), ""); }
 
@@ -26,6 +40,16 @@ class ExampleNodeTest : public ::testing::Test {
   /// Little-endian numeric value of an entry, read straight from the dictionary.
   uint64_t value(uint16_t index, uint8_t subIndex) {
     return bus_.node().dictionary().readUnsigned(index, subIndex, 0xDEADBEEFU);
+  }
+
+  /// Runs `action` on the node inside a no-allocation scope, then lets the node transmit.
+  template <typename Action>
+  void withNode(Action action) {
+    {
+      NoAllocationScope scope;
+      action(bus_.node());
+    }
+    bus_.advance(0);
   }
 
   InProcessBus bus_;

@@ -22,6 +22,14 @@ InProcessBus::InProcessBus(const std::string& device, int nodeId,
   if (!target_) {
     throw std::runtime_error(error);
   }
+  powerOn();
+}
+
+InProcessBus::InProcessBus(const Factory& factory) : target_(factory(can_)) {
+  powerOn();
+}
+
+void InProcessBus::powerOn() {
   NoAllocationScope scope;
   target_->start(now_);
   nextDeadline_ = target_->process(now_);

@@ -1,6 +1,7 @@
 // A device run in-process on a virtual clock, as a TranscriptBus.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -16,6 +17,9 @@ class InProcessBus : public TranscriptBus {
  public:
   InProcessBus(const std::string& device, int nodeId,
                const host::TargetOptions& extra = host::TargetOptions{});
+  /// A device made by `factory` on this bus's CAN transmitter.
+  using Factory = std::function<std::unique_ptr<host::DeviceTarget>(CanTransmitter&)>;
+  explicit InProcessBus(const Factory& factory);
 
   void send(const CanFrame& frame) override;
   bool receive(CanFrame* frame, int timeoutMs) override;
@@ -33,6 +37,8 @@ class InProcessBus : public TranscriptBus {
   size_t unread() const { return can_.count() - cursor_; }
 
  private:
+  void powerOn();
+
   port::RecordingCan can_;
   std::unique_ptr<host::DeviceTarget> target_;
   Microseconds now_ = 0;

@@ -129,7 +129,10 @@ TEST_F(ObjectDictionaryTest, AttributesFollowTheAccessTypes) {
 
 TEST(GeneratedCapacity, DescribesTheDictionary) {
   EXPECT_EQ(gen::example::Capacity::kLargestValue, 32U);
-  EXPECT_EQ(gen::example::Capacity::kRpdoCount, 0U);
+  EXPECT_EQ(gen::example::Capacity::kRpdoCount, 4U);
+  EXPECT_EQ(gen::example::Capacity::kTpdoCount, 4U);
+  EXPECT_EQ(gen::example::Capacity::kHeartbeatConsumers, 3U);
+  EXPECT_EQ(gen::example::Capacity::kErrorHistory, 8U);
   EXPECT_EQ(gen::example::Capacity::kObjectCount, gen::example::kDefinition.objectCount);
 }
 

@@ -9,7 +9,7 @@ namespace costa::test {
 namespace {
 
 TEST(TxQueue, KeepsOrderAndCountsDropsWhenFull) {
-  CanFrame slots[3];
+  QueuedFrame slots[3];
   TxQueue queue(slots, 3);
   for (uint32_t id = 1; id <= 5; ++id) {
     CanFrame frame;
@@ -19,7 +19,7 @@ TEST(TxQueue, KeepsOrderAndCountsDropsWhenFull) {
   EXPECT_EQ(queue.size(), 3U);
   EXPECT_EQ(queue.dropped(), 2U);
   for (uint32_t id = 1; id <= 3; ++id) {
-    EXPECT_EQ(queue.front().id, id);
+    EXPECT_EQ(queue.front().frame.id, id);
     queue.pop();
   }
   EXPECT_TRUE(queue.empty());

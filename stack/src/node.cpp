@@ -1,7 +1,7 @@
+// Node construction, NMT state and resets.
 #include "costa/node.hpp"
 
 #include "costa/cob_ids.hpp"
-#include "costa/nmt_slave.hpp"
 
 namespace costa {
 namespace {
@@ -21,12 +21,29 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       tx_(memory.txSlots, memory.txCapacity),
       hooks_(memory.hookSlots, memory.hookCapacity),
       access_(dictionary_, hooks_),
+      emcy_(dictionary_, settings_.profile, memory.emcyConditions, memory.emcyConditionCapacity,
+            memory.emcyQueue, memory.emcyQueueCapacity),
+      pdoContext_{access_, tx_,    settings_.profile,          emcy_,
+                  events_, clock_, settings_.staticPdoMappings},
       sdo_(access_, tx_, settings_.profile, memory.sdoBuffer, memory.sdoBufferSize,
            settings.sdoTimeout),
       heartbeat_(dictionary_, tx_, clock_),
+      heartbeatConsumer_(dictionary_, memory.heartbeatMonitors, memory.heartbeatMonitorCapacity,
+                         clock_),
+      guarding_(dictionary_, tx_, clock_),
+      sync_(dictionary_, tx_, emcy_, clock_),
+      pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
       nodeId_(settings.nodeId),
       pendingNodeId_(settings.nodeId) {
+  hooks_.attach(EmcyProducer::kErrorHistoryIndex, EmcyProducer::kErrorHistoryIndex, emcy_);
+  hooks_.attach(NodeGuarding::kGuardTimeIndex, NodeGuarding::kLifeTimeFactorIndex, guarding_);
+  hooks_.attach(EmcyProducer::kCobIdIndex, EmcyProducer::kCobIdIndex, emcy_);
+  hooks_.attach(SyncService::kCobIdIndex, SyncService::kWindowIndex, sync_);
+  hooks_.attach(SyncService::kOverflowIndex, SyncService::kOverflowIndex, sync_);
+  hooks_.attach(HeartbeatConsumer::kIndex, HeartbeatConsumer::kIndex, heartbeatConsumer_);
   hooks_.attach(HeartbeatProducer::kIndex, HeartbeatProducer::kIndex, heartbeat_);
+  hooks_.attach(PdoEngine::kFirst, PdoEngine::kLast, pdos_);
+  pdos_.bind();
 }
 
 bool Node::attachHook(uint16_t first, uint16_t last, ObjectHook& hook) noexcept {
@@ -63,6 +80,12 @@ void Node::resetCommunication() noexcept {
   dictionary_.restoreDefaults(kCommunicationFirst, kCommunicationLast);
   sdo_.setNodeId(nodeId_);
   heartbeat_.setNodeId(nodeId_);
+  emcy_.setNodeId(nodeId_);
+  emcy_.onResetCommunication();
+  guarding_.reset(nodeId_, settings_.profile.guardToggleStart);
+  heartbeatConsumer_.configure(true);
+  sync_.configure(clock_.now);
+  pdos_.configure();
   if (events_ != nullptr) {
     events_->onResetCommunication();
   }
@@ -92,54 +115,65 @@ void Node::setState(NmtState state) noexcept {
   if (state == NmtState::kStopped) {
     sdo_.reset();
   }
+  if (previous == NmtState::kOperational) {
+    pdos_.stop();
+  }
+  if (state == NmtState::kOperational) {
+    pdos_.start(clock_.now);
+  }
   if (events_ != nullptr) {
     events_->onNmtStateChanged(previous, state);
   }
 }
 
-void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
-  advanceClock(now);
-  if (frame.dlc > 8U || frame.extended) {
-    ++statistics_.framesIgnored;
-    return;
-  }
-  const bool sdoAllowed = state_ == NmtState::kPreOperational || state_ == NmtState::kOperational;
-  if (frame.id == cob::kNmt) {
-    const NmtSlave::Decision decision = NmtSlave::decide(frame, nodeId_, state_);
-    switch (decision.action) {
-      case NmtSlave::Action::kEnterState: setState(decision.state); break;
-      case NmtSlave::Action::kResetNode: resetNode(); break;
-      case NmtSlave::Action::kResetCommunication: resetCommunication(); break;
-      case NmtSlave::Action::kNone: break;
-    }
-  } else if (frame.id == cob::kSdoRxBase + nodeId_ && sdoAllowed) {
-    if (!sdo_.onRequest(frame, clock_.now)) {
-      ++statistics_.framesIgnored;
-    }
-  } else {
-    ++statistics_.framesIgnored;
-  }
-  flushTx();
+bool Node::emcyAllowed() const noexcept {
+  return state_ == NmtState::kPreOperational || state_ == NmtState::kOperational;
 }
 
-Microseconds Node::process(Microseconds now) noexcept {
-  advanceClock(now);
-  sdo_.process(clock_.now);
-  if (state_ != NmtState::kInitialising) {
-    heartbeat_.process(clock_.now, state_);
+void Node::onCommunicationError() noexcept {
+  // The EMCY describing the error goes out before a change to stopped would silence it.
+  emcy_.process(clock_.now, state_, tx_);
+  const uint64_t behaviour = dictionary_.readUnsigned(kErrorBehaviourIndex, 1, 0);
+  if (behaviour == 0U && state_ == NmtState::kOperational) {
+    setState(NmtState::kPreOperational);
+  } else if (behaviour == 2U && state_ != NmtState::kInitialising) {
+    setState(NmtState::kStopped);
   }
-  flushTx();
-  return earliest(sdo_.nextDeadline(), heartbeat_.nextDeadline());
 }
 
-void Node::flushTx() noexcept {
-  while (!tx_.empty()) {
-    if (!can_.tryTransmit(tx_.front())) {
-      ++statistics_.txRefused;
-      return;
-    }
-    tx_.pop();
+void Node::onControllerEvent(CanControllerEvent event, Microseconds now) noexcept {
+  advanceClock(now);
+  switch (event) {
+    case CanControllerEvent::kRxOverrun:
+      ++statistics_.rxOverruns;
+      emcy_.signal(kEmcyRxOverrun, kErrorCommunication);
+      break;
+    case CanControllerEvent::kErrorPassive:
+      emcy_.raise(kEmcyErrorPassive, 0, kErrorCommunication);
+      break;
+    case CanControllerEvent::kErrorActive: emcy_.clear(kEmcyErrorPassive, 0); break;
+    case CanControllerEvent::kBusOff:
+      if (!busOff_) {
+        busOff_ = true;
+        ++statistics_.busOffs;
+        if (events_ != nullptr) {
+          events_->onBusOff();
+        }
+        onCommunicationError();
+      }
+      break;
+    case CanControllerEvent::kBusOffRecovered:
+      if (busOff_) {
+        busOff_ = false;
+        emcy_.clear(kEmcyErrorPassive, 0);
+        emcy_.signal(kEmcyBusOffRecovered, kErrorCommunication);
+        if (events_ != nullptr) {
+          events_->onBusOffRecovered();
+        }
+      }
+      break;
   }
+  process(clock_.now);
 }
 
 }  // namespace costa

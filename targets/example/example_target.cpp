@@ -9,7 +9,10 @@ NodeSettings ExampleTarget::settings(uint8_t nodeId) noexcept {
 }
 
 ExampleTarget::ExampleTarget(CanTransmitter& can, uint8_t nodeId) noexcept
-    : node_(gen::example::kDefinition, can, settings(nodeId)), device_(node_) {}
+    : ExampleTarget(can, settings(nodeId)) {}
+
+ExampleTarget::ExampleTarget(CanTransmitter& can, const NodeSettings& settings) noexcept
+    : node_(gen::example::kDefinition, can, settings), device_(node_) {}
 
 Microseconds ExampleTarget::process(Microseconds now) noexcept {
   const Microseconds deviceNext = device_.process(now);

@@ -12,6 +12,8 @@ class ExampleTarget {
   using Dictionary = NodeInstance<gen::example::Values, gen::example::Capacity>;
 
   ExampleTarget(CanTransmitter& can, uint8_t nodeId) noexcept;
+  /// With explicit settings (node-id, profile, ...), for tests of profile-specific behaviour.
+  ExampleTarget(CanTransmitter& can, const NodeSettings& settings) noexcept;
 
   void start(Microseconds now) noexcept { node_.start(now); }
   void onFrame(const CanFrame& frame, Microseconds now) noexcept { node_.onFrame(frame, now); }

@@ -1,5 +1,6 @@
 # Toolchain for the firmware build: arm-none-eabi-g++ (Debian gcc-arm-none-eabi), newlib-nano.
-#   cmake -S . -B build-m4 -DCMAKE_TOOLCHAIN_FILE=tools/cmake/arm-none-eabi.cmake -DCOSTA_ARM_CPU=cortex-m4
+#   cmake -S . -B build-m4 -DCMAKE_TOOLCHAIN_FILE=tools/cmake/arm-none-eabi.cmake \
+#         -DCOSTA_ARM_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=MinSizeRel
 # COSTA_ARM_CPU: cortex-m4 (default, single-precision FPU) or cortex-m0plus.
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR arm)
@@ -27,8 +28,6 @@ set(common_flags "${cpu_flags} -ffunction-sections -fdata-sections")
 set(CMAKE_C_FLAGS_INIT "${common_flags}")
 set(CMAKE_CXX_FLAGS_INIT "${common_flags} -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "${cpu_flags} --specs=nano.specs -nostartfiles -Wl,--gc-sections")
-set(CMAKE_CXX_FLAGS_RELEASE_INIT "-Os")
-set(CMAKE_C_FLAGS_RELEASE_INIT "-Os")
 
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)

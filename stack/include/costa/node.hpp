@@ -15,15 +15,20 @@
 #include <stdint.h>
 
 #include "costa/device_profile.hpp"
+#include "costa/emcy_producer.hpp"
+#include "costa/heartbeat_consumer.hpp"
 #include "costa/heartbeat_producer.hpp"
 #include "costa/hook_registry.hpp"
 #include "costa/nmt_state.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/node_events.hpp"
+#include "costa/node_guarding.hpp"
 #include "costa/object_access.hpp"
 #include "costa/od/object_dictionary.hpp"
+#include "costa/pdo_engine.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/sdo_server.hpp"
+#include "costa/sync_service.hpp"
 #include "costa/time.hpp"
 #include "costa/tx_queue.hpp"
 
@@ -31,29 +36,57 @@ namespace costa {
 
 /// Caller-owned storage of a node. Sizes are fixed for the node's lifetime.
 struct NodeMemory {
-  void* values;       ///< RAM block of the dictionary: Definition::valuesSize bytes.
-  CanFrame* txSlots;  ///< Frames waiting for the controller.
+  void* values;          ///< RAM block of the dictionary: Definition::valuesSize bytes.
+  QueuedFrame* txSlots;  ///< Frames waiting for the controller.
   size_t txCapacity;
   uint8_t* sdoBuffer;  ///< Largest value downloadable by a segmented SDO transfer.
   size_t sdoBufferSize;
   HookBinding* hookSlots;  ///< Hooks of services and application.
   size_t hookCapacity;
+  RpdoChannel* rpdos;  ///< One per RPDO communication object (0x1400..0x15FF).
+  size_t rpdoCapacity;
+  TpdoChannel* tpdos;  ///< One per TPDO communication object (0x1800..0x19FF).
+  size_t tpdoCapacity;
+  EmcyCondition* emcyConditions;  ///< Error conditions active at the same time.
+  size_t emcyConditionCapacity;
+  PendingEmcy* emcyQueue;  ///< EMCY frames waiting for their inhibit time.
+  size_t emcyQueueCapacity;
+  HeartbeatMonitor* heartbeatMonitors;  ///< One per sub-index of 0x1016.
+  size_t heartbeatMonitorCapacity;
 };
 
 struct NodeSettings {
   uint8_t nodeId = 1;                                          ///< 1..127.
   DeviceProfile profile{};                                     ///< Device-specific wire behaviour.
   Microseconds sdoTimeout = millisecondsToMicroseconds(1000);  ///< Segmented transfer timeout.
+  StaticPdoMappings staticPdoMappings{};  ///< Mappings of PDOs without a mapping object.
+};
+
+/// Signals from the CAN controller's driver (CiA 301 EMCY codes 0x81xx).
+enum class CanControllerEvent : uint8_t {
+  kRxOverrun,        ///< frames were lost: EMCY 0x8110
+  kErrorPassive,     ///< EMCY 0x8120 until error active again
+  kErrorActive,      ///< back to normal: clears error passive
+  kBusOff,           ///< transmission stops; the communication error behaviour (0x1029) applies
+  kBusOffRecovered,  ///< transmission resumes: EMCY 0x8140
 };
 
 /// Counters of events that are nobody's fault but worth seeing.
 struct NodeStatistics {
   uint32_t framesIgnored = 0;  ///< Frames addressed to nobody here or malformed.
   uint32_t txRefused = 0;      ///< Times the controller refused a frame (kept and retried).
+  uint32_t rxOverruns = 0;     ///< Overruns reported by the controller.
+  uint32_t busOffs = 0;
 };
 
 class Node {
  public:
+  static constexpr uint16_t kErrorBehaviourIndex = 0x1029;
+  static constexpr uint16_t kEmcyLifeGuardOrHeartbeat = 0x8130;
+  static constexpr uint16_t kEmcyRxOverrun = 0x8110;
+  static constexpr uint16_t kEmcyErrorPassive = 0x8120;
+  static constexpr uint16_t kEmcyBusOffRecovered = 0x8140;
+
   Node(const od::Definition& definition, const NodeMemory& memory, CanTransmitter& can,
        const NodeSettings& settings) noexcept;
   Node(const Node&) = delete;
@@ -79,6 +112,7 @@ class Node {
   void flushTx() noexcept;
   bool txPending() const noexcept { return !tx_.empty(); }
   uint32_t txDropped() const noexcept { return tx_.dropped(); }
+  uint32_t txExpired() const noexcept { return tx_.expired(); }
 
   /// Local NMT control (for example an automatic start after power-on).
   void enterState(NmtState state) noexcept;
@@ -90,14 +124,48 @@ class Node {
   /// Node-id to use from the next reset communication on (1..127).
   void setPendingNodeId(uint8_t nodeId) noexcept { pendingNodeId_ = nodeId; }
 
+  // --- Application API ---------------------------------------------------------------------
+  /// The application changed entry (index, subIndex): event-driven and synchronous acyclic
+  /// TPDOs mapping it will be sent.
+  void markChanged(uint16_t index, uint8_t subIndex) noexcept {
+    pdos_.markChanged(index, subIndex);
+  }
+  /// Asks the TPDO whose communication parameter is at `index` to send (an application event).
+  bool requestTpdo(uint16_t communicationIndex) noexcept {
+    return pdos_.requestTransmission(communicationIndex);
+  }
+  /// Raises a device error: EMCY with `code`, `registerBits` (ErrorRegisterBit) and up to 5
+  /// manufacturer-specific bytes; the error register and 0x1003 follow. See EmcyProducer.
+  bool raiseError(uint16_t code, uint8_t registerBits, const uint8_t* manufacturer = nullptr,
+                  uint8_t source = 0) noexcept {
+    return emcy_.raise(code, source, registerBits, manufacturer);
+  }
+  bool clearError(uint16_t code, uint8_t source = 0) noexcept { return emcy_.clear(code, source); }
+  void signalError(uint16_t code, uint8_t registerBits,
+                   const uint8_t* manufacturer = nullptr) noexcept {
+    emcy_.signal(code, registerBits, manufacturer);
+  }
+  uint8_t errorRegister() const noexcept { return emcy_.errorRegister(); }
+  /// Reports a CAN controller condition (from the driver's status or interrupt).
+  void onControllerEvent(CanControllerEvent event, Microseconds now) noexcept;
+  bool busOff() const noexcept { return busOff_; }
+
   od::ObjectDictionary& dictionary() noexcept { return dictionary_; }
   const od::ObjectDictionary& dictionary() const noexcept { return dictionary_; }
   const NodeStatistics& statistics() const noexcept { return statistics_; }
+  const DeviceProfile& profile() const noexcept { return settings_.profile; }
+  const HeartbeatConsumer& heartbeatConsumer() const noexcept { return heartbeatConsumer_; }
+  const PdoEngine& pdos() const noexcept { return pdos_; }
   Microseconds now() const noexcept { return clock_.now; }
 
  private:
   void setState(NmtState state) noexcept;
   void advanceClock(Microseconds now) noexcept;
+  void handleSync(const SyncEvent& sync) noexcept;
+  void handleErrorControl(const CanFrame& frame) noexcept;
+  void handleHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept;
+  void onCommunicationError() noexcept;
+  bool emcyAllowed() const noexcept;
 
   NodeSettings settings_;
   od::ObjectDictionary dictionary_;
@@ -106,60 +174,88 @@ class Node {
   HookRegistry hooks_;
   ObjectAccess access_;
   NodeClock clock_;
+  NodeEvents* events_ = nullptr;
+  EmcyProducer emcy_;
+  PdoContext pdoContext_;
   SdoServer sdo_;
   HeartbeatProducer heartbeat_;
-  NodeEvents* events_ = nullptr;
+  HeartbeatConsumer heartbeatConsumer_;
+  NodeGuarding guarding_;
+  SyncService sync_;
+  PdoEngine pdos_;
   NodeStatistics statistics_;
   NmtState state_ = NmtState::kInitialising;
   uint8_t nodeId_;
   uint8_t pendingNodeId_;
+  bool busOff_ = false;
 };
 
 /// Compile-time capacities of a NodeInstance beyond what the dictionary dictates.
 struct DefaultNodeCapacity {
   static constexpr size_t kTxQueueDepth = 32;
-  static constexpr size_t kHooks = 16;
+  static constexpr size_t kHooks = 24;
   static constexpr size_t kMinimumSdoBuffer = 32;
+  static constexpr size_t kEmcyConditions = 8;
+  static constexpr size_t kEmcyQueueDepth = 8;
 };
 
 namespace detail {
-/// Storage of a NodeInstance; a base class so that it is initialised before the Node base.
-template <typename Values, size_t TxDepth, size_t SdoBytes, size_t Hooks>
-struct NodeStorage {
-  Values values{};
-  CanFrame tx[TxDepth]{};
-  uint8_t sdo[SdoBytes]{};
-  HookBinding hooks[Hooks]{};
-};
-
-template <typename DictionaryCapacity, typename Extra>
-constexpr size_t sdoBufferSize() {
-  return DictionaryCapacity::kLargestValue > Extra::kMinimumSdoBuffer
-             ? DictionaryCapacity::kLargestValue
-             : Extra::kMinimumSdoBuffer;
+constexpr size_t atLeastOne(size_t n) {
+  return n == 0U ? 1U : n;
 }
+
+/// Storage of a NodeInstance; a base class so that it is initialised before the Node base.
+template <typename Values, typename DictionaryCapacity, typename Extra>
+struct NodeStorage {
+  static constexpr size_t kSdoBytes = DictionaryCapacity::kLargestValue > Extra::kMinimumSdoBuffer
+                                          ? DictionaryCapacity::kLargestValue
+                                          : Extra::kMinimumSdoBuffer;
+  static constexpr size_t kRpdos = atLeastOne(DictionaryCapacity::kRpdoCount);
+  static constexpr size_t kTpdos = atLeastOne(DictionaryCapacity::kTpdoCount);
+  static constexpr size_t kMonitors = atLeastOne(DictionaryCapacity::kHeartbeatConsumers);
+
+  Values values{};
+  QueuedFrame tx[Extra::kTxQueueDepth]{};
+  uint8_t sdo[kSdoBytes]{};
+  HookBinding hooks[Extra::kHooks]{};
+  RpdoChannel rpdos[kRpdos]{};
+  TpdoChannel tpdos[kTpdos]{};
+  EmcyCondition emcyConditions[Extra::kEmcyConditions]{};
+  PendingEmcy emcyQueue[Extra::kEmcyQueueDepth]{};
+  HeartbeatMonitor monitors[kMonitors]{};
+
+  NodeMemory memory() noexcept {
+    return NodeMemory{&values,
+                      tx,
+                      Extra::kTxQueueDepth,
+                      sdo,
+                      kSdoBytes,
+                      hooks,
+                      Extra::kHooks,
+                      rpdos,
+                      kRpdos,
+                      tpdos,
+                      kTpdos,
+                      emcyConditions,
+                      Extra::kEmcyConditions,
+                      emcyQueue,
+                      Extra::kEmcyQueueDepth,
+                      monitors,
+                      kMonitors};
+  }
+};
 }  // namespace detail
 
 /// A node together with its storage, sized at compile time from the generated dictionary
 /// (`Values`, `Capacity` of a `costa::gen::NAME` namespace) and `Extra`.
 template <typename Values, typename DictionaryCapacity, typename Extra = DefaultNodeCapacity>
-class NodeInstance : private detail::NodeStorage<Values, Extra::kTxQueueDepth,
-                                                 detail::sdoBufferSize<DictionaryCapacity, Extra>(),
-                                                 Extra::kHooks>,
-                     public Node {
-  using Storage =
-      detail::NodeStorage<Values, Extra::kTxQueueDepth,
-                          detail::sdoBufferSize<DictionaryCapacity, Extra>(), Extra::kHooks>;
+class NodeInstance : private detail::NodeStorage<Values, DictionaryCapacity, Extra>, public Node {
+  using Storage = detail::NodeStorage<Values, DictionaryCapacity, Extra>;
 
  public:
   NodeInstance(const od::Definition& definition, CanTransmitter& can,
                const NodeSettings& settings) noexcept
-      : Storage{},
-        Node(definition,
-             NodeMemory{&this->Storage::values, this->Storage::tx, Extra::kTxQueueDepth,
-                        this->Storage::sdo, sizeof(this->Storage::sdo), this->Storage::hooks,
-                        Extra::kHooks},
-             can, settings) {}
+      : Storage{}, Node(definition, Storage::memory(), can, settings) {}
 
   /// The dictionary's RAM block, typed.
   Values& values() noexcept { return this->Storage::values; }

@@ -1,6 +1,8 @@
 // What a device application hears from its node.
 #pragma once
 
+#include <stdint.h>
+
 #include "costa/nmt_state.hpp"
 
 namespace costa {
@@ -20,6 +22,22 @@ class NodeEvents {
   /// Reset communication: the communication area (0x1000..0x1FFF) has just been set to its
   /// power-on values; the boot-up frame follows.
   virtual void onResetCommunication() noexcept {}
+  /// An RPDO's data has just been written into the dictionary (at reception or at the SYNC).
+  virtual void onRpdoReceived(uint16_t communicationIndex) noexcept { (void)communicationIndex; }
+  /// An RPDO with an event timer (deadline monitoring) did not arrive in time.
+  virtual void onRpdoTimeout(uint16_t communicationIndex) noexcept { (void)communicationIndex; }
+  /// A SYNC was received or produced (after synchronous PDOs were handled).
+  virtual void onSync(uint8_t counter) noexcept { (void)counter; }
+  /// A monitored heartbeat (0x1016) stopped arriving / arrived again after a timeout.
+  virtual void onHeartbeatTimeout(uint8_t nodeId) noexcept { (void)nodeId; }
+  virtual void onHeartbeatResumed(uint8_t nodeId) noexcept { (void)nodeId; }
+  /// Life guarding: no node-guarding request within guard time x life time factor / requests
+  /// arriving again.
+  virtual void onLifeGuardingExpired() noexcept {}
+  virtual void onLifeGuardingResumed() noexcept {}
+  /// The CAN controller went bus-off / recovered.
+  virtual void onBusOff() noexcept {}
+  virtual void onBusOffRecovered() noexcept {}
 
  protected:
   NodeEvents() = default;

@@ -15,6 +15,9 @@ inline constexpr Microseconds millisecondsToMicroseconds(uint64_t ms) noexcept {
   return ms * 1000U;
 }
 
+/// Unit of inhibit times (0x1015, PDO sub-index 3).
+inline constexpr Microseconds kHundredMicroseconds = 100;
+
 /// The earlier of two deadlines.
 inline constexpr Microseconds earliest(Microseconds a, Microseconds b) noexcept {
   return a < b ? a : b;

@@ -5,22 +5,32 @@
 #include <stdint.h>
 
 #include "costa/port/can_frame.hpp"
+#include "costa/time.hpp"
 
 namespace costa {
+
+/// A queued frame and the time after which it is no longer worth sending (synchronous PDOs
+/// whose SYNC window has passed); kNever for most frames.
+struct QueuedFrame {
+  CanFrame frame;
+  Microseconds expiry = kNever;
+};
 
 /// Ring buffer over caller-owned storage. Push never blocks: when full, the frame is dropped and
 /// counted. O(1) per operation, no allocation.
 class TxQueue {
  public:
-  TxQueue(CanFrame* storage, size_t capacity) noexcept : slots_(storage), capacity_(capacity) {}
+  TxQueue(QueuedFrame* storage, size_t capacity) noexcept : slots_(storage), capacity_(capacity) {}
 
   /// Appends a frame. Returns false (and counts a drop) when full.
-  bool push(const CanFrame& frame) noexcept {
+  bool push(const CanFrame& frame, Microseconds expiry = kNever) noexcept {
     if (count_ == capacity_) {
       ++dropped_;
       return false;
     }
-    slots_[(head_ + count_) % capacity_] = frame;
+    QueuedFrame& slot = slots_[(head_ + count_) % capacity_];
+    slot.frame = frame;
+    slot.expiry = expiry;
     ++count_;
     return true;
   }
@@ -28,13 +38,19 @@ class TxQueue {
   bool empty() const noexcept { return count_ == 0U; }
   size_t size() const noexcept { return count_; }
   size_t capacity() const noexcept { return capacity_; }
-  const CanFrame& front() const noexcept { return slots_[head_]; }
+  const QueuedFrame& front() const noexcept { return slots_[head_]; }
 
   void pop() noexcept {
     if (count_ != 0U) {
       head_ = (head_ + 1U) % capacity_;
       --count_;
     }
+  }
+
+  /// Removes the front frame because it expired before it could be sent.
+  void expireFront() noexcept {
+    pop();
+    ++expired_;
   }
 
   void clear() noexcept {
@@ -44,13 +60,16 @@ class TxQueue {
 
   /// Frames refused because the queue was full, since construction.
   uint32_t dropped() const noexcept { return dropped_; }
+  /// Frames discarded because their deadline passed while they waited.
+  uint32_t expired() const noexcept { return expired_; }
 
  private:
-  CanFrame* slots_;
+  QueuedFrame* slots_;
   size_t capacity_;
   size_t head_ = 0;
   size_t count_ = 0;
   uint32_t dropped_ = 0;
+  uint32_t expired_ = 0;
 };
 
 }  // namespace costa

@@ -1,0 +1,134 @@
+// Node guarding and life guarding (0x100C, 0x100D), and the error behaviour (0x1029).
+#include "example_fixture.hpp"
+
+namespace costa::test {
+namespace {
+
+using Guarding = ExampleNodeTest;
+
+TEST_F(Guarding, RepliesWithStateAndAlternatingToggleStartingAtZero) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 701 [0] RTR
+    tx 701 [1] 7F
+    rx 701 [0] RTR
+    tx 701 [1] FF
+    rx 701 [1] RTR                       # a request with DLC 1 is a request too
+    tx 701 [1] 7F
+    rx 000 [2] 01 01
+    rx 701 [0] RTR
+    tx 701 [1] 85
+    rx 000 [2] 02 01
+    rx 701 [0] RTR
+    tx 701 [1] 04
+    rx 702 [0] RTR                       # another node's request
+    silence
+    rx 000 [2] 82 01                     # reset communication: toggle starts over
+    tx 701 [1] 00
+    rx 701 [0] RTR
+    tx 701 [1] 7F
+  )");
+}
+
+class RecordingGuardEvents : public NodeEvents {
+ public:
+  void onLifeGuardingExpired() noexcept override { ++expired; }
+  void onLifeGuardingResumed() noexcept override { ++resumed; }
+  int expired = 0;
+  int resumed = 0;
+};
+
+TEST_F(Guarding, LifeTimeExpiryRaisesEmcy8130AndEntersPreOperational) {
+  RecordingGuardEvents events;
+  bus_.node().setEvents(&events);
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 0C 10 00 64 00 00 00   # guard time 100 ms
+    tx 581 [8] 60 0C 10 00 00 00 00 00
+    rx 601 [8] 2F 0D 10 00 03 00 00 00   # life time factor 3: life time 300 ms
+    tx 581 [8] 60 0D 10 00 00 00 00 00
+    rx 000 [2] 01 01
+    wait 1000
+    silence                              # life guarding starts with the first request
+    rx 701 [0] RTR
+    tx 701 [1] 05
+    wait 299
+    silence
+    wait 1
+    tx 081 [8] 30 81 11 00 00 00 00 00
+  )");
+  EXPECT_EQ(events.expired, 1);
+  EXPECT_EQ(bus_.node().state(), NmtState::kPreOperational);  // 0x1029:01 = 0
+  EXPECT_TRANSCRIPT(R"(
+    wait 1000
+    silence                              # one EMCY per event
+    rx 701 [0] RTR
+    tx 701 [1] FF
+    tx 081 [8] 00 00 00 00 00 00 00 00   # guarding resumed: error reset
+  )");
+  EXPECT_EQ(events.resumed, 1);
+}
+
+TEST_F(Guarding, ErrorBehaviourNoChangeOrStopped) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 0C 10 00 0A 00 00 00
+    tx 581 [8] 60 0C 10 00 00 00 00 00
+    rx 601 [8] 2F 0D 10 00 01 00 00 00
+    tx 581 [8] 60 0D 10 00 00 00 00 00
+    rx 601 [8] 2F 29 10 01 01 00 00 00   # no state change
+    tx 581 [8] 60 29 10 01 00 00 00 00
+    rx 601 [8] 2F 29 10 01 03 00 00 00   # 3 is outside 0..2
+    tx 581 [8] 80 29 10 01 31 00 09 06
+    rx 000 [2] 01 01
+    rx 701 [0] RTR
+    tx 701 [1] 05
+    wait 10
+    tx 081 [8] 30 81 11 00 00 00 00 00
+  )");
+  EXPECT_EQ(bus_.node().state(), NmtState::kOperational);
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 29 10 01 02 00 00 00   # stopped
+    tx 581 [8] 60 29 10 01 00 00 00 00
+    rx 701 [0] RTR
+    tx 701 [1] 85
+    tx 081 [8] 00 00 00 00 00 00 00 00
+    wait 10
+    tx 081 [8] 30 81 11 00 00 00 00 00   # the EMCY leaves before the node stops
+    rx 701 [0] RTR
+    tx 701 [1] 04
+  )");
+  EXPECT_EQ(bus_.node().state(), NmtState::kStopped);
+}
+
+TEST_F(Guarding, NoLifeGuardingWithoutGuardTime) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 0D 10 00 03 00 00 00
+    tx 581 [8] 60 0D 10 00 00 00 00 00
+    rx 701 [0] RTR
+    tx 701 [1] 7F
+    wait 10000
+    silence
+  )");
+}
+
+class GuardingToggleStartsAtOne : public ExampleNodeTest {
+ protected:
+  static NodeSettings settings() {
+    NodeSettings settings;
+    settings.profile.guardToggleStart = 1;
+    return settings;
+  }
+  GuardingToggleStartsAtOne() : ExampleNodeTest(settings()) {}
+};
+
+TEST_F(GuardingToggleStartsAtOne, FirstReplyHasTheToggleBitSet) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 701 [0] RTR
+    tx 701 [1] FF
+    rx 701 [0] RTR
+    tx 701 [1] 7F
+    rx 701 [0] RTR
+    tx 701 [1] FF
+  )");
+}
+
+}  // namespace
+}  // namespace costa::test

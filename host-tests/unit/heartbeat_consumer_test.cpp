@@ -1,0 +1,95 @@
+// Heartbeat consumer (0x1016): monitoring starts at the first heartbeat, timeouts raise EMCY
+// 0x8130 (manufacturer byte: the producer's node-id) and apply 0x1029, a returning producer
+// resets the error.
+#include "example_fixture.hpp"
+
+namespace costa::test {
+namespace {
+
+using HeartbeatConsumerTest = ExampleNodeTest;
+
+class RecordingHeartbeatEvents : public NodeEvents {
+ public:
+  void onHeartbeatTimeout(uint8_t nodeId) noexcept override { lastTimeout = nodeId; }
+  void onHeartbeatResumed(uint8_t nodeId) noexcept override { lastResumed = nodeId; }
+  uint8_t lastTimeout = 0;
+  uint8_t lastResumed = 0;
+};
+
+TEST_F(HeartbeatConsumerTest, TimeoutAfterTheFirstHeartbeatAndReturn) {
+  RecordingHeartbeatEvents events;
+  bus_.node().setEvents(&events);
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5, 100 ms
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 000 [2] 01 01
+    wait 1000
+    silence                              # not monitored before its first heartbeat
+    rx 705 [1] 05
+    wait 99
+    rx 705 [1] 05
+    wait 99
+    silence
+    wait 1
+    tx 081 [8] 30 81 11 05 00 00 00 00
+  )");
+  EXPECT_EQ(events.lastTimeout, 5U);
+  EXPECT_EQ(bus_.node().state(), NmtState::kPreOperational);
+  EXPECT_TRANSCRIPT(R"(
+    wait 1000
+    silence
+    rx 705 [1] 7F
+    tx 081 [8] 00 00 00 00 00 00 00 00
+  )");
+  EXPECT_EQ(events.lastResumed, 5U);
+}
+
+TEST_F(HeartbeatConsumerTest, EntriesWithNodeIdZeroOrTimeZeroAreDisabled) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 16 10 01 00 00 05 00   # time 0
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 601 [8] 23 16 10 02 64 00 00 00   # node 0
+    tx 581 [8] 60 16 10 02 00 00 00 00
+    rx 705 [1] 05
+    rx 700 [1] 05
+    wait 5000
+    silence
+  )");
+}
+
+TEST_F(HeartbeatConsumerTest, TwoEntriesForOneNodeAbort_06040043) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 16 10 01 64 00 05 00
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 601 [8] 23 16 10 02 C8 00 05 00
+    tx 581 [8] 80 16 10 02 43 00 04 06
+    rx 601 [8] 23 16 10 01 C8 00 05 00   # the same entry may change
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 601 [8] 23 16 10 02 C8 00 00 05   # reserved bits 31..24
+    tx 581 [8] 80 16 10 02 30 00 09 06
+  )");
+}
+
+TEST_F(HeartbeatConsumerTest, SeveralProducersAreMonitoredIndependently) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5, 100 ms
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 601 [8] 23 16 10 02 C8 00 06 00   # node 6, 200 ms
+    tx 581 [8] 60 16 10 02 00 00 00 00
+    rx 601 [8] 2F 29 10 01 01 00 00 00   # no state change on errors
+    tx 581 [8] 60 29 10 01 00 00 00 00
+    rx 705 [1] 05
+    rx 706 [1] 00                        # a boot-up counts as a heartbeat
+    wait 100
+    tx 081 [8] 30 81 11 05 00 00 00 00
+    wait 100
+    tx 081 [8] 30 81 11 06 00 00 00 00
+    rx 706 [1] 7F
+    silence                              # node 5 is still missing
+    rx 705 [1] 7F
+    tx 081 [8] 00 00 00 00 00 00 00 00
+  )");
+}
+
+}  // namespace
+}  // namespace costa::test

@@ -1,0 +1,103 @@
+// SYNC consumer and producer: 0x1005, 0x1006, 0x1007, 0x1019.
+#include "example_fixture.hpp"
+
+namespace costa::test {
+namespace {
+
+using Sync = ExampleNodeTest;
+
+constexpr const char* kTpdo1EverySync = R"(
+    rx 601 [8] 2F 00 18 02 01 00 00 00
+    tx 581 [8] 60 00 18 02 00 00 00 00
+)";
+
+TEST_F(Sync, ALengthThatDoesNotMatchTheCounterSettingRaisesEmcy8240) {
+  EXPECT_TRANSCRIPT(std::string(kTpdo1EverySync) + R"(
+    rx 000 [2] 01 01
+    rx 080 [1] 05                        # counter byte, but 0x1019 = 0
+    tx 081 [8] 40 82 11 00 00 00 00 00
+    rx 080 [0]                           # the right length: handled, then the error reset
+    tx 181 [6] 00 00 00 00 D7 00
+    tx 081 [8] 00 00 00 00 00 00 00 00
+  )");
+}
+
+TEST_F(Sync, CounterSettingExpectsOneByte) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 19 10 00 04 00 00 00
+    tx 581 [8] 60 19 10 00 00 00 00 00
+    rx 080 [0]
+    tx 081 [8] 40 82 11 00 00 00 00 00
+  )");
+}
+
+TEST_F(Sync, ProducerSendsEveryPeriodWithItsCounter) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 19 10 00 03 00 00 00   # counter 1..3
+    tx 581 [8] 60 19 10 00 00 00 00 00
+    rx 601 [8] 23 06 10 00 10 27 00 00   # period 10000 us
+    tx 581 [8] 60 06 10 00 00 00 00 00
+    rx 601 [8] 23 05 10 00 80 00 00 40   # bit 30: this node produces
+    tx 581 [8] 60 05 10 00 00 00 00 00
+    wait 9
+    silence
+    wait 1
+    tx 080 [1] 01
+    wait 10
+    tx 080 [1] 02
+    wait 10
+    tx 080 [1] 03
+    wait 10
+    tx 080 [1] 01
+    rx 000 [2] 02 01                     # stopped: no SYNC production
+    wait 50
+    silence
+  )");
+}
+
+TEST_F(Sync, TheProducersOwnSyncDrivesItsSynchronousPdos) {
+  EXPECT_TRANSCRIPT(std::string(kTpdo1EverySync) + R"(
+    rx 601 [8] 23 06 10 00 10 27 00 00
+    tx 581 [8] 60 06 10 00 00 00 00 00
+    rx 601 [8] 23 05 10 00 80 00 00 40
+    tx 581 [8] 60 05 10 00 00 00 00 00
+    rx 000 [2] 01 01
+    wait 10
+    tx 080 [0]
+    tx 181 [6] 00 00 00 00 D7 00
+  )");
+}
+
+TEST_F(Sync, ParameterRules) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 19 10 00 01 00 00 00   # overflow value 1 is not allowed
+    tx 581 [8] 80 19 10 00 30 00 09 06
+    rx 601 [8] 2F 19 10 00 F1 00 00 00   # nor above 240
+    tx 581 [8] 80 19 10 00 30 00 09 06
+    rx 601 [8] 23 05 10 00 80 00 00 20   # 29-bit SYNC
+    tx 581 [8] 80 05 10 00 30 00 09 06
+    rx 601 [8] 23 06 10 00 10 27 00 00
+    tx 581 [8] 60 06 10 00 00 00 00 00
+    rx 601 [8] 2F 19 10 00 02 00 00 00   # overflow only while the period is 0
+    tx 581 [8] 80 19 10 00 22 00 00 08
+    rx 601 [8] 23 05 10 00 80 00 00 40
+    tx 581 [8] 60 05 10 00 00 00 00 00
+    rx 601 [8] 23 05 10 00 81 00 00 40   # another CAN-ID while producing
+    tx 581 [8] 80 05 10 00 30 00 09 06
+  )");
+}
+
+TEST_F(Sync, ConsumerFollowsTheConfiguredCobId) {
+  EXPECT_TRANSCRIPT(std::string(kTpdo1EverySync) + R"(
+    rx 601 [8] 23 05 10 00 90 00 00 00   # SYNC on 0x090
+    tx 581 [8] 60 05 10 00 00 00 00 00
+    rx 000 [2] 01 01
+    rx 080 [0]
+    silence
+    rx 090 [0]
+    tx 181 [6] 00 00 00 00 D7 00
+  )");
+}
+
+}  // namespace
+}  // namespace costa::test

@@ -1,0 +1,277 @@
+// Transmit PDOs: every transmission type, inhibit time, event timer, SYNC start value, SYNC
+// window, remote requests, consistency. Example TPDO1: COB-ID 0x181, type 255, maps 0x2001
+// (UNSIGNED32 uptime, 0 here) and 0x2011 (INTEGER16 temperature 215). TPDO3: invalid,
+// COB-ID 0x381, maps 0x2000 (UNSIGNED32 setpoint 1000).
+#include "example_fixture.hpp"
+
+namespace costa::test {
+namespace {
+
+using Tpdo = ExampleNodeTest;
+
+constexpr const char* kEnableTpdo3 = R"(
+    rx 601 [8] 23 02 18 01 81 03 00 00   # TPDO3 COB-ID 0x381, valid
+    tx 581 [8] 60 02 18 01 00 00 00 00
+)";
+
+TEST_F(Tpdo, EventDrivenOnApplicationEvent) {
+  EXPECT_TRANSCRIPT("rx 000 [2] 01 01\nsilence");
+  withNode([](Node& node) { node.markChanged(0x2001, 0); });
+  EXPECT_TRANSCRIPT("tx 181 [6] 00 00 00 00 D7 00");
+  withNode([](Node& node) { node.markChanged(0x2000, 0); });  // mapped only by invalid TPDO3
+  EXPECT_TRANSCRIPT("silence");
+  withNode([](Node& node) {
+    EXPECT_TRUE(node.requestTpdo(0x1801));
+    EXPECT_TRUE(node.requestTpdo(0x1803));  // invalid: nothing is sent
+    EXPECT_FALSE(node.requestTpdo(0x1900));
+  });
+  EXPECT_TRANSCRIPT("tx 281 [8] FF FF FF FF FF FF FF FF");
+}
+
+TEST_F(Tpdo, NoTransmissionOutsideOperational) {
+  withNode([](Node& node) { node.markChanged(0x2001, 0); });
+  EXPECT_TRANSCRIPT(R"(
+    rx 080 [0]
+    rx 181 [0] RTR
+    silence
+    rx 000 [2] 01 01
+    silence                              # the pre-operational event is not remembered
+  )");
+}
+
+TEST_F(Tpdo, EventTimerSendsPeriodicallyUntilStopped) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 00 18 05 64 00 00 00   # event timer 100 ms
+    tx 581 [8] 60 00 18 05 00 00 00 00
+    wait 300
+    silence
+    rx 000 [2] 01 01
+    wait 99
+    silence
+    wait 1
+    tx 181 [6] 00 00 00 00 D7 00
+    wait 100
+    tx 181 [6] 00 00 00 00 D7 00
+    rx 000 [2] 02 01                     # stopped: PDOs fall silent
+    wait 1000
+    silence
+  )");
+}
+
+TEST_F(Tpdo, InhibitTimeDelaysButKeepsEvents) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 00 18 03 F4 01 00 00   # inhibit while valid: refused
+    tx 581 [8] 80 00 18 03 30 00 09 06
+    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 601 [8] 2B 00 18 03 F4 01 00 00   # inhibit 500 x 100 us = 50 ms
+    tx 581 [8] 60 00 18 03 00 00 00 00
+    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 000 [2] 01 01
+  )");
+  withNode([](Node& node) { node.markChanged(0x2011, 0); });
+  EXPECT_TRANSCRIPT("tx 181 [6] 00 00 00 00 D7 00\nwait 10");
+  withNode([](Node& node) { node.markChanged(0x2011, 0); });
+  withNode([](Node& node) { node.markChanged(0x2011, 0); });  // merged with the previous event
+  EXPECT_TRANSCRIPT(
+      "silence\nwait 39\nsilence\nwait 1\ntx 181 [6] 00 00 00 00 D7 00\nwait 200\nsilence");
+}
+
+TEST_F(Tpdo, SynchronousCyclicEveryNthSync) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 00 18 02 03 00 00 00   # every 3rd SYNC
+    tx 581 [8] 60 00 18 02 00 00 00 00
+    rx 000 [2] 01 01
+    rx 080 [0]
+    rx 080 [0]
+    silence
+    rx 080 [0]
+    tx 181 [6] 00 00 00 00 D7 00
+    rx 080 [0]
+    rx 080 [0]
+    silence
+    rx 080 [0]
+    tx 181 [6] 00 00 00 00 D7 00
+  )");
+}
+
+TEST_F(Tpdo, SynchronousAcyclicOnlyAfterAnEvent) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 00 18 02 00 00 00 00   # type 0
+    tx 581 [8] 60 00 18 02 00 00 00 00
+    rx 000 [2] 01 01
+    rx 080 [0]
+    silence
+  )");
+  withNode([](Node& node) { node.markChanged(0x2001, 0); });
+  EXPECT_TRANSCRIPT("silence\nrx 080 [0]\ntx 181 [6] 00 00 00 00 D7 00\nrx 080 [0]\nsilence");
+}
+
+TEST_F(Tpdo, SyncRtrOnlySendsWhatTheSyncSampled) {
+  EXPECT_TRANSCRIPT(std::string(R"(
+    rx 601 [8] 2F 02 18 02 FC 00 00 00   # TPDO3 type 252
+    tx 581 [8] 60 02 18 02 00 00 00 00
+  )") + kEnableTpdo3 +
+                    R"(
+    rx 000 [2] 01 01
+    rx 080 [0]                           # samples setpoint 1000
+    silence
+    rx 601 [8] 23 00 20 00 D0 07 00 00   # setpoint 2000
+    tx 581 [8] 60 00 20 00 00 00 00 00
+    rx 381 [0] RTR
+    tx 381 [4] E8 03 00 00
+    rx 080 [0]
+    rx 381 [0] RTR
+    tx 381 [4] D0 07 00 00
+  )");
+}
+
+TEST_F(Tpdo, RtrOnlySendsTheCurrentValue) {
+  EXPECT_TRANSCRIPT(std::string(R"(
+    rx 601 [8] 2F 02 18 02 FD 00 00 00   # TPDO3 type 253
+    tx 581 [8] 60 02 18 02 00 00 00 00
+  )") + kEnableTpdo3 +
+                    R"(
+    rx 000 [2] 01 01
+    rx 080 [0]
+    silence
+    rx 381 [0] RTR
+    tx 381 [4] E8 03 00 00
+    rx 381 [4] RTR                       # DLC of a remote request does not matter
+    tx 381 [4] E8 03 00 00
+  )");
+}
+
+TEST_F(Tpdo, RemoteRequestsNeedTheCobIdAndTheTypeToAllowThem) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 000 [2] 01 01
+    rx 181 [0] RTR                       # type 255, RTR allowed (bit 30 = 0)
+    tx 181 [6] 00 00 00 00 D7 00
+    rx 601 [8] 23 00 18 01 81 01 00 40   # bit 30: no RTR
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 181 [0] RTR
+    silence
+    rx 601 [8] 23 00 18 01 81 01 00 00
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 601 [8] 2F 00 18 02 01 00 00 00   # synchronous type: not answered (CiA 301)
+    tx 581 [8] 60 00 18 02 00 00 00 00
+    rx 181 [0] RTR
+    silence
+  )");
+}
+
+TEST_F(Tpdo, SyncStartValueDelaysTheFirstTransmission) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 19 10 00 0A 00 00 00   # SYNC counter overflow 10
+    tx 581 [8] 60 19 10 00 00 00 00 00
+    rx 601 [8] 2F 02 18 02 02 00 00 00   # TPDO3 every 2nd SYNC
+    tx 581 [8] 60 02 18 02 00 00 00 00
+    rx 601 [8] 2F 02 18 06 03 00 00 00   # starting at counter 3
+    tx 581 [8] 60 02 18 06 00 00 00 00
+    rx 601 [8] 23 02 18 01 81 03 00 00
+    tx 581 [8] 60 02 18 01 00 00 00 00
+    rx 601 [8] 2F 02 18 06 04 00 00 00   # start value of a valid PDO: refused
+    tx 581 [8] 80 02 18 06 30 00 09 06
+    rx 000 [2] 01 01
+    rx 080 [1] 01
+    rx 080 [1] 02
+    silence
+    rx 080 [1] 03
+    tx 381 [4] E8 03 00 00
+    rx 080 [1] 04
+    silence
+    rx 080 [1] 05
+    tx 381 [4] E8 03 00 00
+    rx 080 [1] 06
+    rx 080 [1] 07
+    tx 381 [4] E8 03 00 00
+  )");
+}
+
+TEST_F(Tpdo, SynchronousPdosAreDroppedWhenTheSyncWindowHasPassed) {
+  EXPECT_TRANSCRIPT(std::string(R"(
+    rx 601 [8] 23 07 10 00 E8 03 00 00   # window 1000 us
+    tx 581 [8] 60 07 10 00 00 00 00 00
+    rx 601 [8] 2F 02 18 02 01 00 00 00
+    tx 581 [8] 60 02 18 02 00 00 00 00
+  )") + kEnableTpdo3 +
+                    "rx 000 [2] 01 01");
+  bus_.can().setAccepting(false);
+  EXPECT_TRANSCRIPT("rx 080 [0]\nwait 2");
+  bus_.can().setAccepting(true);
+  bus_.advance(0);
+  EXPECT_TRANSCRIPT("silence");
+  EXPECT_EQ(bus_.node().txExpired(), 1U);
+  bus_.can().setAccepting(false);
+  EXPECT_TRANSCRIPT("rx 080 [0]");
+  bus_.advance(500);  // within the window
+  bus_.can().setAccepting(true);
+  bus_.advance(0);
+  EXPECT_TRANSCRIPT("tx 381 [4] E8 03 00 00");
+}
+
+TEST_F(Tpdo, NeverMixesTwoWritesOfAMappedEntry) {
+  // TPDO2 maps 0x2004:05 (INTEGER64, -1). A segmented download of a new value is in progress
+  // while SYNCs trigger the PDO: it carries the old value until the download completes.
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 01 18 02 01 00 00 00
+    tx 581 [8] 60 01 18 02 00 00 00 00
+    rx 000 [2] 01 01
+    rx 601 [8] 21 04 20 05 08 00 00 00
+    tx 581 [8] 60 04 20 05 00 00 00 00
+    rx 601 [8] 00 11 22 33 44 55 66 77
+    tx 581 [8] 20 00 00 00 00 00 00 00
+    rx 080 [0]
+    tx 281 [8] FF FF FF FF FF FF FF FF
+    rx 601 [8] 1D 08 00 00 00 00 00 00
+    tx 581 [8] 30 00 00 00 00 00 00 00
+    rx 080 [0]
+    tx 281 [8] 11 22 33 44 55 66 77 08
+  )");
+}
+
+TEST_F(Tpdo, Type254IsEventDrivenLike255) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 00 18 02 FE 00 00 00
+    tx 581 [8] 60 00 18 02 00 00 00 00
+    rx 000 [2] 01 01
+    rx 080 [0]
+    silence
+    rx 181 [0] RTR
+    tx 181 [6] 00 00 00 00 D7 00
+  )");
+  withNode([](Node& node) { node.markChanged(0x2011, 0); });
+  EXPECT_TRANSCRIPT("tx 181 [6] 00 00 00 00 D7 00");
+}
+
+class TpdoSoloStyle : public ExampleNodeTest {
+ protected:
+  static NodeSettings settings() {
+    NodeSettings settings;
+    settings.profile.tpdoRtrTypes = TpdoRtrTypes::kAllTypes;
+    settings.profile.tpdoType0 = TpdoType0::kEverySync;
+    settings.profile.tpdoOnEnteringOperational = true;
+    return settings;
+  }
+  TpdoSoloStyle() : ExampleNodeTest(settings()) {}
+};
+
+TEST_F(TpdoSoloStyle, ProfileSelectsRtrTypesTypeZeroAndStartTransmission) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 000 [2] 01 01
+    tx 181 [6] 00 00 00 00 D7 00         # event-driven PDOs once on entering operational
+    tx 281 [8] FF FF FF FF FF FF FF FF
+    rx 601 [8] 2F 00 18 02 00 00 00 00   # type 0: every SYNC
+    tx 581 [8] 60 00 18 02 00 00 00 00
+    rx 080 [0]
+    tx 181 [6] 00 00 00 00 D7 00
+    rx 080 [0]
+    tx 181 [6] 00 00 00 00 D7 00
+    rx 181 [0] RTR                       # and on RTR
+    tx 181 [6] 00 00 00 00 D7 00
+  )");
+}
+
+}  // namespace
+}  // namespace costa::test

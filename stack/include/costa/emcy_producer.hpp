@@ -1,0 +1,107 @@
+// EMCY producer (CiA 301 7.2.7): error conditions, the error register 0x1001, the pre-defined
+// error field 0x1003, the EMCY COB-ID 0x1014 and inhibit time 0x1015.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "costa/device_profile.hpp"
+#include "costa/nmt_state.hpp"
+#include "costa/node_clock.hpp"
+#include "costa/object_hook.hpp"
+#include "costa/tx_queue.hpp"
+
+namespace costa {
+
+/// Error register bits (0x1001, CiA 301 table "Error register").
+enum ErrorRegisterBit : uint8_t {
+  kErrorGeneric = 1U << 0,
+  kErrorCurrent = 1U << 1,
+  kErrorVoltage = 1U << 2,
+  kErrorTemperature = 1U << 3,
+  kErrorCommunication = 1U << 4,
+  kErrorDeviceProfile = 1U << 5,
+  kErrorManufacturer = 1U << 7,
+};
+
+/// The error register bit CiA 301 associates with an error code's class (0x2xxx current, ...).
+uint8_t errorRegisterBitFor(uint16_t code) noexcept;
+
+/// An active error condition. `source` tells apart conditions sharing a code (for example one
+/// heartbeat consumer entry from another).
+struct EmcyCondition {
+  uint16_t code = 0;
+  uint8_t source = 0;
+  uint8_t registerBits = 0;
+};
+
+/// An EMCY waiting for its inhibit time or for a state that allows EMCY.
+struct PendingEmcy {
+  uint8_t data[8] = {};
+};
+
+class EmcyProducer : public ObjectHook {
+ public:
+  static constexpr uint16_t kErrorRegisterIndex = 0x1001;
+  static constexpr uint16_t kErrorHistoryIndex = 0x1003;
+  static constexpr uint16_t kCobIdIndex = 0x1014;
+  static constexpr uint16_t kInhibitIndex = 0x1015;
+
+  EmcyProducer(od::ObjectDictionary& dictionary, const DeviceProfile& profile,
+               EmcyCondition* conditions, size_t conditionCapacity, PendingEmcy* pending,
+               size_t pendingCapacity) noexcept;
+
+  void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
+
+  /// Reset communication: pending frames are dropped; active conditions stay (they describe
+  /// the device) and the error register is rewritten.
+  void onResetCommunication() noexcept;
+
+  /// Raises a condition and queues its EMCY (once: raising an active condition does nothing).
+  /// `manufacturer` (5 bytes, may be null) fills the manufacturer-specific field. Returns false
+  /// when the condition was already active or the table is full (the EMCY is still sent).
+  bool raise(uint16_t code, uint8_t source, uint8_t registerBits,
+             const uint8_t* manufacturer = nullptr) noexcept;
+  /// Clears a condition; when it was the last one, queues the error-reset EMCY (code 0x0000).
+  /// Returns false when the condition was not active.
+  bool clear(uint16_t code, uint8_t source) noexcept;
+  /// An error event without a lasting condition: one EMCY, recorded in 0x1003.
+  void signal(uint16_t code, uint8_t registerBits, const uint8_t* manufacturer = nullptr) noexcept;
+
+  bool active(uint16_t code, uint8_t source) const noexcept;
+  size_t activeCount() const noexcept { return count_; }
+  uint8_t errorRegister() const noexcept;
+  /// EMCY frames that could not be queued (queue full), since construction.
+  uint32_t lost() const noexcept { return lost_; }
+
+  /// Sends queued EMCY frames when `state` allows (pre-operational, operational) and the
+  /// inhibit time (0x1015) has passed since the previous one.
+  void process(Microseconds now, NmtState state, TxQueue& tx) noexcept;
+  Microseconds nextDeadline(NmtState state) const noexcept;
+
+  /// 0x1003 (writing 0 to sub-index 0 clears the history; any other write aborts 0x06090030),
+  /// 0x1014 (the CAN-ID of a valid EMCY cannot change; 29-bit refused).
+  AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
+                  size_t length) noexcept override;
+
+ private:
+  void enqueue(uint16_t code, uint8_t registerValue, const uint8_t* manufacturer) noexcept;
+  void record(uint16_t code, const uint8_t* manufacturer) noexcept;
+  void publishRegister() noexcept;
+  uint32_t cobId() const noexcept;
+
+  od::ObjectDictionary& dictionary_;
+  const DeviceProfile& profile_;
+  EmcyCondition* conditions_;
+  size_t capacity_;
+  size_t count_ = 0;
+  PendingEmcy* pending_;
+  size_t pendingCapacity_;
+  size_t pendingHead_ = 0;
+  size_t pendingCount_ = 0;
+  uint32_t lost_ = 0;
+  uint8_t nodeId_ = 0;
+  Microseconds nextAllowed_ = 0;
+};
+
+}  // namespace costa

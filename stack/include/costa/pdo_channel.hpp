@@ -1,0 +1,62 @@
+// What RPDO and TPDO channels share: where their parameters live, how their COB-ID is read,
+// and the services they report to.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "costa/device_profile.hpp"
+#include "costa/node_clock.hpp"
+#include "costa/object_access.hpp"
+#include "costa/pdo_map.hpp"
+#include "costa/tx_queue.hpp"
+
+namespace costa {
+
+class EmcyProducer;
+class NodeEvents;
+
+/// A device's fixed mapping for a PDO that has no mapping object in its dictionary.
+struct StaticPdoMapping {
+  uint16_t communicationIndex;  ///< 0x1400.. or 0x1800..
+  uint8_t count;
+  uint32_t entries[PdoMap::kMaxEntries];
+};
+
+struct StaticPdoMappings {
+  const StaticPdoMapping* mappings = nullptr;
+  size_t count = 0;
+};
+
+/// Everything a PDO channel needs from its node.
+struct PdoContext {
+  ObjectAccess& access;
+  TxQueue& tx;
+  const DeviceProfile& profile;
+  EmcyProducer& emcy;
+  NodeEvents*& events;
+  const NodeClock& clock;
+  StaticPdoMappings staticMappings;
+};
+
+/// A decoded PDO COB-ID (sub-index 1 of a communication parameter).
+struct PdoCobId {
+  uint32_t canId = 0;
+  bool valid = false;
+  bool rtrAllowed = false;
+  bool extended = false;      ///< bit 29
+  bool reservedBits = false;  ///< bits 28..11 set in an 11-bit COB-ID
+};
+
+PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept;
+
+/// CiA 301 restricted CAN-IDs (7.3.5): not usable by a PDO.
+bool isRestrictedCanId(uint32_t canId) noexcept;
+
+/// Reads the mapping of the PDO whose communication parameter is at `communicationIndex`: the
+/// mapping object (index + 0x200) when the dictionary has one, else the device's static mapping.
+/// Returns the number of values written to `values` (at most PdoMap::kMaxEntries).
+size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdoMappings& fixed,
+                         uint16_t communicationIndex, uint32_t* values) noexcept;
+
+}  // namespace costa

@@ -1,0 +1,71 @@
+// All PDOs of a node: discovery of their parameter objects, validation of writes to them
+// (CiA 301 7.5.2.35-7.5.2.39), dispatch of received PDOs and remote requests, SYNC and timers.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "costa/object_hook.hpp"
+#include "costa/pdo_channel.hpp"
+#include "costa/rpdo_channel.hpp"
+#include "costa/tpdo_channel.hpp"
+
+namespace costa {
+
+class PdoEngine : public ObjectHook {
+ public:
+  static constexpr uint16_t kFirst = 0x1400;
+  static constexpr uint16_t kLast = 0x1BFF;
+
+  PdoEngine(PdoContext& context, RpdoChannel* rpdos, size_t rpdoCapacity, TpdoChannel* tpdos,
+            size_t tpdoCapacity) noexcept;
+
+  /// Finds the PDO communication objects in the dictionary (0x1400..0x15FF, 0x1800..0x19FF) and
+  /// binds one channel to each, up to the capacities. Call once, before the first reset.
+  void bind() noexcept;
+  /// Reads every PDO's parameters (after a reset communication).
+  void configure() noexcept;
+
+  void start(Microseconds now) noexcept;  ///< entering operational
+  void stop() noexcept;                   ///< leaving operational
+
+  /// A frame received while operational: an RPDO, or a remote request for a TPDO. Returns false
+  /// when no PDO uses the frame.
+  bool onFrame(const CanFrame& frame, Microseconds now) noexcept;
+  /// A SYNC (operational): held RPDO data is applied, then synchronous TPDOs are sent.
+  void onSync(uint8_t counter, Microseconds now, Microseconds windowEnd) noexcept;
+  void process(Microseconds now) noexcept;
+  Microseconds nextDeadline() const noexcept;
+
+  /// An application event on entry (index, subIndex): every TPDO mapping it that is event-driven
+  /// (254/255) or synchronous acyclic (0) will send.
+  void markChanged(uint16_t index, uint8_t subIndex) noexcept;
+  /// An application event for the TPDO whose communication parameter is at `index`.
+  bool requestTransmission(uint16_t communicationIndex) noexcept;
+
+  size_t rpdoCount() const noexcept { return rpdoCount_; }
+  size_t tpdoCount() const noexcept { return tpdoCount_; }
+
+  AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
+                  size_t length) noexcept override;
+
+ private:
+  RpdoChannel* findRpdo(uint16_t communicationIndex) noexcept;
+  TpdoChannel* findTpdo(uint16_t communicationIndex) noexcept;
+  AbortCode checkCommunicationWrite(bool receive, bool currentlyValid, uint32_t currentCanId,
+                                    uint8_t subIndex, const uint8_t* data,
+                                    size_t length) const noexcept;
+  AbortCode checkMappingWrite(bool receive, bool pdoValid, const od::EntryRef& ref,
+                              const uint8_t* data, size_t length) const noexcept;
+
+  PdoContext& context_;
+  RpdoChannel* rpdos_;
+  size_t rpdoCapacity_;
+  size_t rpdoCount_ = 0;
+  TpdoChannel* tpdos_;
+  size_t tpdoCapacity_;
+  size_t tpdoCount_ = 0;
+  bool running_ = false;
+};
+
+}  // namespace costa

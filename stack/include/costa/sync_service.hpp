@@ -1,0 +1,74 @@
+// SYNC consumer and producer (CiA 301 7.2.5): COB-ID 0x1005 (bit 30: this node produces),
+// communication cycle period 0x1006 (µs), synchronous window length 0x1007 (µs), synchronous
+// counter overflow value 0x1019.
+#pragma once
+
+#include <stdint.h>
+
+#include "costa/node_clock.hpp"
+#include "costa/object_hook.hpp"
+#include "costa/port/can_frame.hpp"
+#include "costa/tx_queue.hpp"
+
+namespace costa {
+
+class EmcyProducer;
+
+/// A SYNC seen by the node (received, or produced by itself).
+struct SyncEvent {
+  uint8_t counter = 0;  ///< 0 when the SYNC carries no counter
+  Microseconds time = 0;
+  Microseconds windowEnd = kNever;  ///< synchronous PDOs not sent by then are dropped
+};
+
+class SyncService : public ObjectHook {
+ public:
+  static constexpr uint16_t kCobIdIndex = 0x1005;
+  static constexpr uint16_t kPeriodIndex = 0x1006;
+  static constexpr uint16_t kWindowIndex = 0x1007;
+  static constexpr uint16_t kOverflowIndex = 0x1019;
+  static constexpr uint16_t kEmcyUnexpectedLength = 0x8240;
+
+  SyncService(od::ObjectDictionary& dictionary, TxQueue& tx, EmcyProducer& emcy,
+              const NodeClock& clock) noexcept
+      : dictionary_(dictionary), tx_(tx), emcy_(emcy), clock_(clock) {}
+
+  /// Reads 0x1005/0x1006/0x1007/0x1019 (after a reset communication, or a write).
+  void configure(Microseconds now) noexcept;
+
+  /// True for a frame on the SYNC COB-ID (consumer side).
+  bool accepts(const CanFrame& frame) const noexcept {
+    return !frame.rtr && !frame.extended && frame.id == canId_;
+  }
+  /// A received SYNC. A length that does not match 0x1019 (DLC 0 without a counter, 1 with)
+  /// raises EMCY 0x8240 and the SYNC is ignored; returns false then.
+  bool onFrame(const CanFrame& frame, Microseconds now, SyncEvent* event) noexcept;
+
+  /// Producer: sends the SYNC when due. Returns true (and fills `event`) when it sent one.
+  bool process(Microseconds now, bool allowed, SyncEvent* event) noexcept;
+  Microseconds nextDeadline() const noexcept { return producer_ ? next_ : kNever; }
+
+  bool producer() const noexcept { return producer_; }
+
+  AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
+                  size_t length) noexcept override;
+
+ private:
+  Microseconds windowEnd(Microseconds time) const noexcept {
+    return window_ == 0U ? kNever : time + window_;
+  }
+
+  od::ObjectDictionary& dictionary_;
+  TxQueue& tx_;
+  EmcyProducer& emcy_;
+  const NodeClock& clock_;
+  uint32_t canId_ = 0x080;
+  bool producer_ = false;
+  Microseconds period_ = 0;
+  Microseconds window_ = 0;
+  uint8_t overflow_ = 0;
+  uint8_t counter_ = 0;  ///< producer's next counter value
+  Microseconds next_ = kNever;
+};
+
+}  // namespace costa

@@ -1,0 +1,206 @@
+#include "costa/emcy_producer.hpp"
+
+#include "costa/cob_ids.hpp"
+#include "costa/od/little_endian.hpp"
+
+namespace costa {
+
+uint8_t errorRegisterBitFor(uint16_t code) noexcept {
+  switch (code >> 12U) {
+    case 0x2: return kErrorCurrent;
+    case 0x3: return kErrorVoltage;
+    case 0x4: return kErrorTemperature;
+    case 0x8: return kErrorCommunication;
+    case 0xF: return kErrorManufacturer;
+    default: return 0;
+  }
+}
+
+EmcyProducer::EmcyProducer(od::ObjectDictionary& dictionary, const DeviceProfile& profile,
+                           EmcyCondition* conditions, size_t conditionCapacity,
+                           PendingEmcy* pending, size_t pendingCapacity) noexcept
+    : dictionary_(dictionary),
+      profile_(profile),
+      conditions_(conditions),
+      capacity_(conditionCapacity),
+      pending_(pending),
+      pendingCapacity_(pendingCapacity) {}
+
+void EmcyProducer::onResetCommunication() noexcept {
+  pendingHead_ = 0;
+  pendingCount_ = 0;
+  nextAllowed_ = 0;
+  publishRegister();
+}
+
+uint8_t EmcyProducer::errorRegister() const noexcept {
+  if (count_ == 0U) {
+    return 0;
+  }
+  uint8_t value = kErrorGeneric;
+  for (size_t i = 0; i < count_; ++i) {
+    value = static_cast<uint8_t>(value | conditions_[i].registerBits);
+  }
+  return value;
+}
+
+bool EmcyProducer::active(uint16_t code, uint8_t source) const noexcept {
+  for (size_t i = 0; i < count_; ++i) {
+    if (conditions_[i].code == code && conditions_[i].source == source) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool EmcyProducer::raise(uint16_t code, uint8_t source, uint8_t registerBits,
+                         const uint8_t* manufacturer) noexcept {
+  if (active(code, source)) {
+    return false;
+  }
+  const bool stored = count_ < capacity_;
+  if (stored) {
+    conditions_[count_++] = EmcyCondition{code, source, registerBits};
+  }
+  publishRegister();
+  const auto registerValue = static_cast<uint8_t>(errorRegister() | kErrorGeneric | registerBits);
+  record(code, manufacturer);
+  enqueue(code, registerValue, manufacturer);
+  return stored;
+}
+
+bool EmcyProducer::clear(uint16_t code, uint8_t source) noexcept {
+  for (size_t i = 0; i < count_; ++i) {
+    if (conditions_[i].code == code && conditions_[i].source == source) {
+      conditions_[i] = conditions_[count_ - 1U];
+      --count_;
+      publishRegister();
+      if (count_ == 0U) {
+        enqueue(0x0000, 0, nullptr);
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
+void EmcyProducer::signal(uint16_t code, uint8_t registerBits,
+                          const uint8_t* manufacturer) noexcept {
+  record(code, manufacturer);
+  enqueue(code, static_cast<uint8_t>(errorRegister() | kErrorGeneric | registerBits), manufacturer);
+}
+
+void EmcyProducer::publishRegister() noexcept {
+  const od::EntryRef ref = dictionary_.find(kErrorRegisterIndex, 0);
+  if (ref.valid()) {
+    dictionary_.storeUnsigned(*ref.entry, errorRegister());
+  }
+}
+
+void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
+  const od::Object* history = dictionary_.findObject(kErrorHistoryIndex);
+  if (history == nullptr || history->subCount < 2U) {
+    return;
+  }
+  const auto capacity = static_cast<uint8_t>(history->subCount - 1U);
+  uint8_t count = static_cast<uint8_t>(dictionary_.readUnsigned(kErrorHistoryIndex, 0, 0));
+  if (count < capacity) {
+    ++count;
+  }
+  for (uint8_t sub = count; sub > 1U; --sub) {
+    dictionary_.storeUnsigned(
+        kErrorHistoryIndex, sub,
+        dictionary_.readUnsigned(kErrorHistoryIndex, static_cast<uint8_t>(sub - 1U), 0));
+  }
+  uint32_t info = 0;
+  if (manufacturer != nullptr) {
+    info = static_cast<uint32_t>(manufacturer[0]) | (static_cast<uint32_t>(manufacturer[1]) << 8U);
+  }
+  dictionary_.storeUnsigned(kErrorHistoryIndex, 1, code | (info << 16U));
+  dictionary_.storeUnsigned(kErrorHistoryIndex, 0, count);
+}
+
+void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
+                           const uint8_t* manufacturer) noexcept {
+  if (pendingCount_ == pendingCapacity_) {
+    ++lost_;
+    return;
+  }
+  PendingEmcy& slot = pending_[(pendingHead_ + pendingCount_) % pendingCapacity_];
+  slot = PendingEmcy{};
+  if (profile_.emcyLayout == EmcyLayout::kErrorRegisterInFourthByte) {
+    slot.data[3] = registerValue;
+  } else {
+    storeLittleEndian(slot.data, code, 2);
+    slot.data[2] = registerValue;
+    for (size_t i = 0; manufacturer != nullptr && i < 5U; ++i) {
+      slot.data[3U + i] = manufacturer[i];
+    }
+  }
+  ++pendingCount_;
+}
+
+uint32_t EmcyProducer::cobId() const noexcept {
+  return static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, cob::kEmcyBase + nodeId_));
+}
+
+void EmcyProducer::process(Microseconds now, NmtState state, TxQueue& tx) noexcept {
+  if (state != NmtState::kPreOperational && state != NmtState::kOperational) {
+    return;
+  }
+  const uint32_t cob = cobId();
+  if ((cob & 0x80000000U) != 0U) {
+    pendingCount_ = 0;  // EMCY not valid: nothing is produced
+    return;
+  }
+  const Microseconds inhibit = dictionary_.readUnsigned(kInhibitIndex, 0, 0) * kHundredMicroseconds;
+  while (pendingCount_ != 0U && now >= nextAllowed_) {
+    CanFrame frame;
+    frame.id = cob & 0x7FFU;
+    frame.dlc = 8;
+    for (size_t i = 0; i < 8U; ++i) {
+      frame.data[i] = pending_[pendingHead_].data[i];
+    }
+    tx.push(frame);
+    pendingHead_ = (pendingHead_ + 1U) % pendingCapacity_;
+    --pendingCount_;
+    nextAllowed_ = now + inhibit;
+  }
+}
+
+Microseconds EmcyProducer::nextDeadline(NmtState state) const noexcept {
+  if (pendingCount_ == 0U ||
+      (state != NmtState::kPreOperational && state != NmtState::kOperational)) {
+    return kNever;
+  }
+  return nextAllowed_;
+}
+
+AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                              const uint8_t* data, size_t length) noexcept {
+  if (ref.index() == kErrorHistoryIndex) {
+    if (ref.subIndex() != 0U || length < 1U || data[0] != 0U) {
+      return AbortCode::kInvalidValue;
+    }
+    for (uint8_t sub = 1; sub < ref.object->subCount; ++sub) {
+      dictionary.storeUnsigned(kErrorHistoryIndex, sub, 0);
+    }
+    dictionary.storeUnsigned(kErrorHistoryIndex, 0, 0);
+    return AbortCode::kNone;
+  }
+  if (ref.index() == kCobIdIndex && length == 4U) {
+    const uint32_t value = loadU32(data);
+    const uint32_t current = cobId();
+    const bool wasValid = (current & 0x80000000U) == 0U;
+    const bool willBeValid = (value & 0x80000000U) == 0U;
+    if ((value & 0x20000000U) != 0U || (value & 0x1FFFF800U) != 0U) {
+      return AbortCode::kInvalidValue;
+    }
+    if (wasValid && willBeValid && (value & 0x7FFU) != (current & 0x7FFU)) {
+      return AbortCode::kInvalidValue;
+    }
+  }
+  return dictionary.write(*ref.entry, data, length);
+}
+
+}  // namespace costa

@@ -1,0 +1,56 @@
+#include "costa/pdo_channel.hpp"
+
+namespace costa {
+
+PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept {
+  PdoCobId cob;
+  const bool bit31 = (value & 0x80000000U) != 0U;
+  const bool bit30 = (value & 0x40000000U) != 0U;
+  if (polarity == PdoCobIdPolarity::kCia301) {
+    cob.valid = !bit31;
+    cob.rtrAllowed = !bit30;
+  } else {
+    cob.valid = bit31;
+    cob.rtrAllowed = bit30;
+  }
+  cob.extended = (value & 0x20000000U) != 0U;
+  cob.canId = value & (cob.extended ? 0x1FFFFFFFU : 0x7FFU);
+  cob.reservedBits = !cob.extended && (value & 0x1FFFF800U) != 0U;
+  return cob;
+}
+
+bool isRestrictedCanId(uint32_t canId) noexcept {
+  return canId <= 0x07FU || (canId >= 0x101U && canId <= 0x180U) ||
+         (canId >= 0x581U && canId <= 0x5FFU) || (canId >= 0x601U && canId <= 0x67FU) ||
+         (canId >= 0x6E0U && canId <= 0x6FFU) || canId >= 0x701U;
+}
+
+size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdoMappings& fixed,
+                         uint16_t communicationIndex, uint32_t* values) noexcept {
+  const auto mappingIndex = static_cast<uint16_t>(communicationIndex + 0x200U);
+  if (dictionary.findObject(mappingIndex) != nullptr) {
+    size_t count = static_cast<size_t>(dictionary.readUnsigned(mappingIndex, 0, 0));
+    if (count > PdoMap::kMaxEntries) {
+      count = PdoMap::kMaxEntries;
+    }
+    for (size_t i = 0; i < count; ++i) {
+      values[i] = static_cast<uint32_t>(
+          dictionary.readUnsigned(mappingIndex, static_cast<uint8_t>(i + 1U), 0));
+    }
+    return count;
+  }
+  for (size_t i = 0; i < fixed.count; ++i) {
+    const StaticPdoMapping& mapping = fixed.mappings[i];
+    if (mapping.communicationIndex == communicationIndex) {
+      const size_t count =
+          mapping.count > PdoMap::kMaxEntries ? PdoMap::kMaxEntries : mapping.count;
+      for (size_t e = 0; e < count; ++e) {
+        values[e] = mapping.entries[e];
+      }
+      return count;
+    }
+  }
+  return 0;
+}
+
+}  // namespace costa

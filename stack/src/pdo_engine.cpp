@@ -1,0 +1,195 @@
+#include "costa/pdo_engine.hpp"
+
+#include "costa/od/little_endian.hpp"
+
+namespace costa {
+namespace {
+
+constexpr uint16_t kRpdoCommunicationFirst = 0x1400;
+constexpr uint16_t kRpdoCommunicationLast = 0x15FF;
+constexpr uint16_t kTpdoCommunicationFirst = 0x1800;
+constexpr uint16_t kTpdoCommunicationLast = 0x19FF;
+constexpr uint16_t kMappingOffset = 0x200;
+
+}  // namespace
+
+PdoEngine::PdoEngine(PdoContext& context, RpdoChannel* rpdos, size_t rpdoCapacity,
+                     TpdoChannel* tpdos, size_t tpdoCapacity) noexcept
+    : context_(context),
+      rpdos_(rpdos),
+      rpdoCapacity_(rpdoCapacity),
+      tpdos_(tpdos),
+      tpdoCapacity_(tpdoCapacity) {}
+
+void PdoEngine::bind() noexcept {
+  const od::Definition& definition = context_.access.dictionary().definition();
+  rpdoCount_ = 0;
+  tpdoCount_ = 0;
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    const uint16_t index = definition.objects[i].index;
+    if (index >= kRpdoCommunicationFirst && index <= kRpdoCommunicationLast &&
+        rpdoCount_ < rpdoCapacity_) {
+      rpdos_[rpdoCount_++].bind(index);
+    } else if (index >= kTpdoCommunicationFirst && index <= kTpdoCommunicationLast &&
+               tpdoCount_ < tpdoCapacity_) {
+      tpdos_[tpdoCount_++].bind(index);
+    }
+  }
+}
+
+void PdoEngine::configure() noexcept {
+  running_ = false;
+  for (size_t i = 0; i < rpdoCount_; ++i) {
+    rpdos_[i].configure(context_);
+  }
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    tpdos_[i].configure(context_);
+    tpdos_[i].stop();
+  }
+}
+
+void PdoEngine::start(Microseconds now) noexcept {
+  running_ = true;
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    tpdos_[i].start(context_, now, context_.profile.tpdoOnEnteringOperational);
+  }
+}
+
+void PdoEngine::stop() noexcept {
+  running_ = false;
+  for (size_t i = 0; i < rpdoCount_; ++i) {
+    rpdos_[i].stop();
+  }
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    tpdos_[i].stop();
+  }
+}
+
+bool PdoEngine::onFrame(const CanFrame& frame, Microseconds now) noexcept {
+  if (!running_) {
+    return false;
+  }
+  bool used = false;
+  for (size_t i = 0; i < rpdoCount_; ++i) {
+    if (rpdos_[i].accepts(frame)) {
+      rpdos_[i].onFrame(context_, frame, now);
+      used = true;
+    }
+  }
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    if (tpdos_[i].acceptsRemoteRequest(frame)) {
+      tpdos_[i].onRemoteRequest(context_, now);
+      used = true;
+    }
+  }
+  return used;
+}
+
+void PdoEngine::onSync(uint8_t counter, Microseconds now, Microseconds windowEnd) noexcept {
+  if (!running_) {
+    return;
+  }
+  for (size_t i = 0; i < rpdoCount_; ++i) {
+    rpdos_[i].onSync(context_);
+  }
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    tpdos_[i].onSync(context_, counter, now, windowEnd);
+  }
+}
+
+void PdoEngine::process(Microseconds now) noexcept {
+  if (!running_) {
+    return;
+  }
+  for (size_t i = 0; i < rpdoCount_; ++i) {
+    rpdos_[i].process(context_, now);
+  }
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    tpdos_[i].process(context_, now);
+  }
+}
+
+Microseconds PdoEngine::nextDeadline() const noexcept {
+  Microseconds next = kNever;
+  if (!running_) {
+    return next;
+  }
+  for (size_t i = 0; i < rpdoCount_; ++i) {
+    next = earliest(next, rpdos_[i].nextDeadline());
+  }
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    next = earliest(next, tpdos_[i].nextDeadline());
+  }
+  return next;
+}
+
+void PdoEngine::markChanged(uint16_t index, uint8_t subIndex) noexcept {
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    if (tpdos_[i].maps(index, subIndex)) {
+      tpdos_[i].signalEvent();
+    }
+  }
+}
+
+bool PdoEngine::requestTransmission(uint16_t communicationIndex) noexcept {
+  TpdoChannel* tpdo = findTpdo(communicationIndex);
+  if (tpdo == nullptr) {
+    return false;
+  }
+  tpdo->signalEvent();
+  return true;
+}
+
+RpdoChannel* PdoEngine::findRpdo(uint16_t communicationIndex) noexcept {
+  for (size_t i = 0; i < rpdoCount_; ++i) {
+    if (rpdos_[i].communicationIndex() == communicationIndex) {
+      return &rpdos_[i];
+    }
+  }
+  return nullptr;
+}
+
+TpdoChannel* PdoEngine::findTpdo(uint16_t communicationIndex) noexcept {
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    if (tpdos_[i].communicationIndex() == communicationIndex) {
+      return &tpdos_[i];
+    }
+  }
+  return nullptr;
+}
+
+AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                           const uint8_t* data, size_t length) noexcept {
+  const uint16_t index = ref.index();
+  const bool receive = index < kTpdoCommunicationFirst;
+  const bool mapping = (index >= 0x1600U && index <= 0x17FFU) || index >= 0x1A00U;
+  const auto communicationIndex = static_cast<uint16_t>(mapping ? index - kMappingOffset : index);
+  RpdoChannel* rpdo = receive ? findRpdo(communicationIndex) : nullptr;
+  TpdoChannel* tpdo = receive ? nullptr : findTpdo(communicationIndex);
+  if (rpdo == nullptr && tpdo == nullptr) {
+    return dictionary.write(*ref.entry, data, length);
+  }
+  const bool valid = rpdo != nullptr ? rpdo->valid() : tpdo->valid();
+  const uint32_t canId = rpdo != nullptr ? rpdo->canId() : tpdo->canId();
+  const AbortCode verdict =
+      mapping ? checkMappingWrite(receive, valid, ref, data, length)
+              : checkCommunicationWrite(receive, valid, canId, ref.subIndex(), data, length);
+  if (verdict != AbortCode::kNone) {
+    return verdict;
+  }
+  const AbortCode written = dictionary.write(*ref.entry, data, length);
+  if (written != AbortCode::kNone) {
+    return written;
+  }
+  if (rpdo != nullptr) {
+    rpdo->configure(context_);
+  } else {
+    tpdo->configure(context_);
+    if (running_) {
+      tpdo->start(context_, context_.clock.now, false);
+    }
+  }
+  return AbortCode::kNone;
+}
+
+}  // namespace costa

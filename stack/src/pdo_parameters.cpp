@@ -1,0 +1,84 @@
+// Validation of writes to PDO communication and mapping parameters (CiA 301 7.5.2.35-39).
+#include "costa/od/little_endian.hpp"
+#include "costa/pdo_engine.hpp"
+
+namespace costa {
+
+AbortCode PdoEngine::checkCommunicationWrite(bool receive, bool currentlyValid,
+                                             uint32_t currentCanId, uint8_t subIndex,
+                                             const uint8_t* data, size_t length) const noexcept {
+  const DeviceProfile& profile = context_.profile;
+  switch (subIndex) {
+    case 1: {
+      if (length != 4U) {
+        return AbortCode::kNone;  // the dictionary reports the length error
+      }
+      const PdoCobId cob = decodePdoCobId(loadU32(data), profile.pdoCobIdPolarity);
+      if (cob.extended || cob.reservedBits) {
+        return AbortCode::kInvalidValue;  // 29-bit CAN-IDs are not supported
+      }
+      if (currentlyValid && cob.valid && cob.canId != currentCanId) {
+        return AbortCode::kInvalidValue;  // invalidate before changing the CAN-ID
+      }
+      if (cob.valid) {
+        const CanIdRange& range = receive ? profile.rpdoCanIds : profile.tpdoCanIds;
+        if (range.restricts() ? !range.contains(cob.canId) : isRestrictedCanId(cob.canId)) {
+          return AbortCode::kInvalidValue;
+        }
+      }
+      return AbortCode::kNone;
+    }
+    case 2: {
+      if (length < 1U) {
+        return AbortCode::kNone;
+      }
+      const uint8_t type = data[0];
+      const bool reserved =
+          length > 1U && loadLittleEndian(data, length) > 0xFFU;  // wider types (UNSIGNED32)
+      if (reserved || (type > 240U && type < (receive ? 254U : 252U))) {
+        return AbortCode::kInvalidValue;
+      }
+      return AbortCode::kNone;
+    }
+    case 3:  // inhibit time
+    case 6:  // SYNC start value
+      return currentlyValid && !receive ? AbortCode::kInvalidValue : AbortCode::kNone;
+    default: return AbortCode::kNone;
+  }
+}
+
+AbortCode PdoEngine::checkMappingWrite(bool receive, bool pdoValid, const od::EntryRef& ref,
+                                       const uint8_t* data, size_t length) const noexcept {
+  if (pdoValid) {
+    return AbortCode::kCannotStoreState;  // mapping changes only while the PDO is invalid
+  }
+  const od::ObjectDictionary& dictionary = context_.access.dictionary();
+  const uint16_t index = ref.index();
+  const PdoDirection direction = receive ? PdoDirection::kReceive : PdoDirection::kTransmit;
+  if (ref.subIndex() != 0U) {
+    if (dictionary.readUnsigned(index, 0, 0) != 0U) {
+      return AbortCode::kCannotStoreState;  // disable the mapping (sub-index 0 = 0) first
+    }
+    return length == 4U ? PdoMap::checkEntry(dictionary, loadU32(data), direction)
+                        : AbortCode::kNone;
+  }
+  if (length != 1U) {
+    return AbortCode::kNone;
+  }
+  const uint8_t count = data[0];
+  if (count > PdoMap::kMaxEntries || count >= ref.object->subCount) {
+    return AbortCode::kMappingTooLong;
+  }
+  uint32_t values[PdoMap::kMaxEntries] = {};
+  for (uint8_t i = 0; i < count; ++i) {
+    values[i] =
+        static_cast<uint32_t>(dictionary.readUnsigned(index, static_cast<uint8_t>(i + 1U), 0));
+    if (values[i] == 0U) {
+      return AbortCode::kParameterIncompatible;  // an enabled entry must map something
+    }
+  }
+  PdoMap candidate;
+  return candidate.resolve(dictionary, values, count, direction);
+}
+
+}  // namespace costa

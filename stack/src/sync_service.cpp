@@ -1,0 +1,85 @@
+#include "costa/sync_service.hpp"
+
+#include "costa/emcy_producer.hpp"
+#include "costa/od/little_endian.hpp"
+
+namespace costa {
+
+void SyncService::configure(Microseconds now) noexcept {
+  const auto cob = static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, 0x080));
+  canId_ = cob & 0x7FFU;
+  producer_ = (cob & 0x40000000U) != 0U;
+  period_ = dictionary_.readUnsigned(kPeriodIndex, 0, 0);
+  window_ = dictionary_.readUnsigned(kWindowIndex, 0, 0);
+  overflow_ = static_cast<uint8_t>(dictionary_.readUnsigned(kOverflowIndex, 0, 0));
+  counter_ = 1;
+  next_ = producer_ && period_ != 0U ? now + period_ : kNever;
+}
+
+bool SyncService::onFrame(const CanFrame& frame, Microseconds now, SyncEvent* event) noexcept {
+  const uint8_t expected = overflow_ >= 2U ? 1U : 0U;
+  if (frame.dlc != expected) {
+    emcy_.raise(kEmcyUnexpectedLength, 0, kErrorCommunication);
+    return false;
+  }
+  emcy_.clear(kEmcyUnexpectedLength, 0);
+  event->counter = expected != 0U ? frame.data[0] : 0U;
+  event->time = now;
+  event->windowEnd = windowEnd(now);
+  return true;
+}
+
+bool SyncService::process(Microseconds now, bool allowed, SyncEvent* event) noexcept {
+  if (!producer_ || next_ == kNever || now < next_) {
+    return false;
+  }
+  next_ += period_;
+  if (next_ <= now) {
+    next_ = now + period_;
+  }
+  if (!allowed) {
+    return false;
+  }
+  CanFrame frame;
+  frame.id = canId_;
+  event->counter = 0;
+  if (overflow_ >= 2U) {
+    frame.dlc = 1;
+    frame.data[0] = counter_;
+    event->counter = counter_;
+    counter_ = counter_ >= overflow_ ? 1U : static_cast<uint8_t>(counter_ + 1U);
+  }
+  tx_.push(frame);
+  event->time = now;
+  event->windowEnd = windowEnd(now);
+  return true;
+}
+
+AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                             const uint8_t* data, size_t length) noexcept {
+  const uint16_t index = ref.index();
+  if (index == kCobIdIndex && length == 4U) {
+    const uint32_t value = loadU32(data);
+    if ((value & 0x20000000U) != 0U || (value & 0x1FFFF800U) != 0U) {
+      return AbortCode::kInvalidValue;  // 29-bit SYNC is not supported
+    }
+    if (producer_ && (value & 0x40000000U) != 0U && (value & 0x7FFU) != canId_) {
+      return AbortCode::kInvalidValue;  // stop producing before changing the CAN-ID
+    }
+  }
+  if (index == kOverflowIndex && length == 1U) {
+    if (data[0] == 1U || data[0] > 240U) {
+      return AbortCode::kInvalidValue;
+    }
+    if (period_ != 0U) {
+      return AbortCode::kCannotStoreState;  // CiA 301: only while the cycle period is 0
+    }
+  }
+  const AbortCode written = dictionary.write(*ref.entry, data, length);
+  if (written == AbortCode::kNone) {
+    configure(clock_.now);
+  }
+  return written;
+}
+
+}  // namespace costa
