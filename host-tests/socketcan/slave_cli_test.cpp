@@ -56,6 +56,52 @@ TEST(SlaveProcessOnVcan, TraceShowsEveryFrameWithItsMeaning) {
   EXPECT_NE(output.find("SDO download 0x1017:00 = 1000"), std::string::npos) << output;
 }
 
+TEST(SlaveProcessOnVcan, SoloSpeedReferenceBecomesARampingSpeedFeedbackTpdo) {
+  SocketBus bus("solo", 1, {"--trace"});
+  ASSERT_EQ(bus.error(), "");
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    rx 601 [8] 22 15 30 00 01 00 00 00
+    tx 581 [8] 60 15 30 00 00 00 00 00
+    rx 601 [8] 22 16 30 00 00 00 00 00
+    tx 581 [8] 60 16 30 00 00 00 00 00
+    rx 601 [8] 22 02 30 00 01 00 00 00
+    tx 581 [8] 60 02 30 00 00 00 00 00
+    rx 601 [8] 22 15 18 01 81 02 00 C0
+    tx 581 [8] 60 15 18 01 00 00 00 00
+    rx 601 [8] 22 15 18 02 01 00 00 00
+    tx 581 [8] 60 15 18 02 00 00 00 00
+    rx 000 [2] 01 01
+    rx 601 [8] 22 2A 30 00 00 00 14 00
+    tx 581 [8] 60 2A 30 00 00 00 00 00
+    rx 601 [8] 22 05 30 00 E8 03 00 00
+    tx 581 [8] 60 05 30 00 00 00 00 00
+  )",
+                     bus, kSocketReceiveTimeoutMs),
+            "");
+  int32_t previous = -1;
+  for (int i = 0; i < 4; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    CanFrame sync;
+    sync.id = 0x080;
+    bus.send(sync);
+    CanFrame frame;
+    ASSERT_TRUE(bus.receive(&frame, kSocketReceiveTimeoutMs));
+    ASSERT_EQ(host::formatFrame(frame).substr(0, 7), "281 [4]");
+    const auto rpm = static_cast<int32_t>(
+        static_cast<uint32_t>(frame.data[0]) | static_cast<uint32_t>(frame.data[1]) << 8U |
+        static_cast<uint32_t>(frame.data[2]) << 16U | static_cast<uint32_t>(frame.data[3]) << 24U);
+    EXPECT_GT(rpm, previous);  // 10 rev/s^2: 600 rpm/s, ramping towards 1000 rpm
+    EXPECT_LE(rpm, 1000);
+    previous = rpm;
+  }
+  EXPECT_GT(previous, 300);
+  EXPECT_EQ(bus.slave().stop(SIGTERM), 0);
+  const std::string output = bus.slave().output();
+  EXPECT_NE(output.find("SDO download 0x3005:00 = 1000"), std::string::npos) << output;
+  EXPECT_NE(output.find("tx 281 [4]"), std::string::npos) << output;
+}
+
 TEST(SlaveProcessOnVcan, UnknownInterfaceIsOneLineAndNonZero) {
   SlaveProcess slave({"--iface", "nosuchcan0", "example"});
   const int status = slave.waitExit(5000);

@@ -34,7 +34,6 @@ struct Row {
 };
 
 constexpr DataType U8 = DataType::kUnsigned8;
-constexpr DataType U16 = DataType::kUnsigned16;
 constexpr DataType U32 = DataType::kUnsigned32;
 constexpr DataType I32 = DataType::kInteger32;  // INT32 and Sfxt(32-17)
 constexpr Access R = Access::kRo;
@@ -47,10 +46,10 @@ constexpr int64_t NL = kNoLimit;
 // clang-format off
 const Row kManual[] = {
   // index  sub type acc pdo    group  low          high         default  line
-  {0x1001, 0, U8,  R,  false, kV, NL, NL, 0, 624},   // D1: Uint32 [0-254] -> UNSIGNED8
-  {0x100C, 0, U16, RW, false, kV, NL, NL, 0, 642},   // D2: Uint32 [0-65535] -> UNSIGNED16
-  {0x100D, 0, U8,  RW, false, kV, NL, NL, 0, 649},   // D2: Uint32 [0-255] -> UNSIGNED8
-  {0x1017, 0, U16, RW, false, kV, NL, NL, 0, 656},   // D2
+  {0x1001, 0, U32, R,  false, kV, NL, NL, 0, 624},   // D1: Uint32, read-only
+  {0x100C, 0, U32, RW, false, kV, 0, 65535, 0, 642},  // D2: Uint32 [0-65535]
+  {0x100D, 0, U32, RW, false, kV, 0, 255, 0, 649},    // D2: Uint32 [0-255]
+  {0x1017, 0, U32, RW, false, kV, 0, 65535, 0, 656},  // D2
   {0x3001, 0, U32, RW, false, kM, 1, 127, 1, 861},   // D6: [1-254] -> node-ids 1..127
   {0x3002, 0, U32, RW, false, kM, 0, 2, 0, 870},
   {0x3003, 0, I32, RW, false, kM, 0, 4194304, 4194304, 881},  // [0, 32 A] (D7), 32 A
@@ -59,7 +58,7 @@ const Row kManual[] = {
   {0x3006, 0, I32, RW, false, kV, 0, 13107200, 0, 936},       // [0, 100.0]
   {0x3007, 0, U32, W,  false, kV, 0, 1, 0, 943},
   {0x3008, 0, U32, RW, false, kV, 0, 1, 1, 952},
-  {0x3009, 0, U32, RW, false, kM, 8, 80, 20, 962},            // D8: kHz
+  {0x3009, 0, U32, RW, false, kM, 8000, 80000, 20000, 962},  // D8: held in Hz
   {0x300A, 0, I32, RW, false, kM, 0, 39321600, 0, 971},       // [0, 300.0]
   {0x300B, 0, I32, RW, false, kM, 0, 39321600, 0, 978},
   {0x300C, 0, U32, RW, true,  kV, 0, 1, 0, 987},
@@ -152,7 +151,7 @@ std::vector<Row> allRows() {
   for (const PdoRecord& pdo : kPdoRecords) {
     rows.push_back({pdo.index, 0, U8, Access::kConst, false, kGroupNone, NL, NL, 2, pdo.line});
     rows.push_back({pdo.index, 1, U32, RW, false, kGroupCommunication, NL, NL, 0, pdo.line});
-    rows.push_back({pdo.index, 2, U8, RW, false, kGroupCommunication, NL, NL, 0, pdo.line + 5});
+    rows.push_back({pdo.index, 2, U32, RW, false, kGroupCommunication, 0, 255, 0, pdo.line + 5});
   }
   return rows;
 }

@@ -75,7 +75,7 @@ bool EmcyProducer::clear(uint16_t code, uint8_t source) noexcept {
       conditions_[i] = conditions_[count_ - 1U];
       --count_;
       publishRegister();
-      if (count_ == 0U) {
+      if (count_ == 0U && profile_.emcyOnErrorReset) {
         enqueue(0x0000, 0, nullptr);
       }
       return true;

@@ -51,7 +51,9 @@ void Node::handleErrorControl(const CanFrame& frame) noexcept {
     if (sender == nodeId_) {
       const NodeGuarding::Event event = guarding_.onRequest(state_, clock_.now);
       if (event == NodeGuarding::Event::kResumed) {
-        emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
+        if (settings_.profile.emcyForErrorControl) {
+          emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
+        }
         if (events_ != nullptr) {
           events_->onLifeGuardingResumed();
         }
@@ -67,13 +69,17 @@ void Node::handleErrorControl(const CanFrame& frame) noexcept {
 void Node::handleHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept {
   if (event.kind == HeartbeatConsumer::EventKind::kTimeout) {
     const uint8_t producer[5] = {event.nodeId, 0, 0, 0, 0};
-    emcy_.raise(kEmcyLifeGuardOrHeartbeat, event.entry, kErrorCommunication, producer);
+    if (settings_.profile.emcyForErrorControl) {
+      emcy_.raise(kEmcyLifeGuardOrHeartbeat, event.entry, kErrorCommunication, producer);
+    }
     if (events_ != nullptr) {
       events_->onHeartbeatTimeout(event.nodeId);
     }
     onCommunicationError();
   } else if (event.kind == HeartbeatConsumer::EventKind::kResumed) {
-    emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
+    if (settings_.profile.emcyForErrorControl) {
+      emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
+    }
     if (events_ != nullptr) {
       events_->onHeartbeatResumed(event.nodeId);
     }
@@ -96,7 +102,9 @@ Microseconds Node::process(Microseconds now) noexcept {
   if (state_ != NmtState::kInitialising) {
     heartbeat_.process(at, state_);
     if (guarding_.process(at) == NodeGuarding::Event::kLifeTimeExpired) {
-      emcy_.raise(kEmcyLifeGuardOrHeartbeat, 0, kErrorCommunication);
+      if (settings_.profile.emcyForErrorControl) {
+        emcy_.raise(kEmcyLifeGuardOrHeartbeat, 0, kErrorCommunication);
+      }
       if (events_ != nullptr) {
         events_->onLifeGuardingExpired();
       }

@@ -266,6 +266,10 @@ void SdoServer::abortTransfer(AbortCode code) noexcept {
 }
 
 void SdoServer::sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept {
+  if (!profile_.distinguishHighAndLowValues &&
+      (code == AbortCode::kValueTooHigh || code == AbortCode::kValueTooLow)) {
+    code = AbortCode::kInvalidValue;
+  }
   uint8_t response[8] = {kScsAbort, static_cast<uint8_t>(index), static_cast<uint8_t>(index >> 8U),
                          subIndex};
   storeLittleEndian(response + 4, static_cast<uint32_t>(code), 4);

@@ -71,6 +71,14 @@ struct DeviceProfile {
   /// Event-driven TPDOs (254/255) are sent once when the node enters OPERATIONAL. CiA 301 does
   /// not ask for it (events and the event timer trigger them), so the default is off.
   bool tpdoOnEnteringOperational = false;
+  /// SDO aborts for values out of range: CiA 301's 0x06090031 (too high) / 0x06090032 (too low),
+  /// or 0x06090030 (value range exceeded) for both when false.
+  bool distinguishHighAndLowValues = true;
+  /// An EMCY with error code 0x0000 when the last error condition clears (CiA 301).
+  bool emcyOnErrorReset = true;
+  /// The node reports life-guarding and heartbeat-consumer errors with EMCY 0x8130 itself; when
+  /// false only the application events fire and the device reports them its own way.
+  bool emcyForErrorControl = true;
 };
 
 }  // namespace costa

@@ -1,0 +1,52 @@
+// A simulated motor behind a SOLO: speed ramps with the configured acceleration, position
+// follows at up to the speed limit, Iq follows the torque reference, with plausible currents,
+// voltages and temperature. Deterministic (no random noise), freestanding.
+//
+// Model (documented in targets/solo/README.md):
+//   - the drive acts only in digital commanding mode, when enabled and without a fault;
+//     otherwise the motor coasts down at kCoastRevPerS2;
+//   - speed mode: the speed ramps to min(reference, speed limit) at 0x302A/0x302B (rev/s²), or
+//     at kDefaultRampRevPerS2 when they are 0; a reference of 0 stops at kFastStopRevPerS2;
+//   - position mode: moves to the reference at up to the speed limit, accelerating and braking
+//     at kDefaultRampRevPerS2, and stops exactly on it;
+//   - torque mode: Iq follows the reference (5 ms lag); Iq accelerates the rotor
+//     (kRevPerS2PerAmp) against viscous friction;
+//   - position counts: 4 × encoder lines per revolution (encoder and sensorless modes), 3 × poles
+//     (hall mode, manual line 1380); counter-clockwise is positive.
+#pragma once
+
+#include "drive_backend.hpp"
+
+namespace costa::solo {
+
+class SimulatedDrive final : public DriveBackend {
+ public:
+  static constexpr double kDefaultRampRevPerS2 = 100.0;
+  static constexpr double kFastStopRevPerS2 = 1000.0;
+  static constexpr double kCoastRevPerS2 = 20.0;
+  static constexpr double kRevPerS2PerAmp = 50.0;
+  static constexpr double kBusVoltage = 24.0;
+  static constexpr double kAmbientC = 25.0;
+  static constexpr uint32_t kAnalogueInputs[2] = {0, 2048};
+
+  void step(const DriveCommand& command, Microseconds elapsed) noexcept override;
+  void read(DriveFeedback* feedback) noexcept override;
+  void home() noexcept override { position_ = 0; }
+  bool identify(double* resistance, double* inductance) noexcept override;
+
+ private:
+  void integrate(const DriveCommand& command, double dt) noexcept;
+  static double countsPerRevolution(const DriveCommand& command) noexcept;
+
+  double speedRpm_ = 0;
+  double position_ = 0;
+  double iq_ = 0;
+  double id_ = 0;
+  double temperature_ = kAmbientC;
+  double electricalTurns_ = 0;  ///< electrical angle in turns, 0..1
+  double polePairs_ = 4;
+  bool dcMotor_ = false;
+  uint32_t faults_ = 0;
+};
+
+}  // namespace costa::solo

@@ -1,0 +1,62 @@
+// The behaviour behind the SOLO's objects: references and modes go to the drive backend, its
+// measurements come back into the dictionary, and the objects with side effects act.
+//
+//   0x3001  new device address: taken at the next reset (errata S11), kept across resets (M)
+//   0x3007  motor identification: after 1 s, resistance 0x300D and inductance 0x300E
+//   0x3009  PWM frequency: written in kHz (8..80), read in Hz (errata D8)
+//   0x3014  reset factory: defaults at the next power-up (stored parameters are discarded)
+//   0x301F  home: the position counter becomes 0
+//   0x3020  device error register: writable (overwrite errors); see SoloErrorRegister
+//   0x304A  analogue input: the channel is the upload request's data (errata P9)
+//   life time expiry: 0x3020 bit 5, and the drive stops until the register is cleared (S5)
+#pragma once
+
+#include "costa/node.hpp"
+#include "drive_backend.hpp"
+#include "solo_error_register.hpp"
+
+namespace costa::solo {
+
+class SoloDevice : public ObjectHook, public NodeEvents {
+ public:
+  /// The drive is simulated in steps of this length.
+  static constexpr Microseconds kStep = 10000;
+
+  /// Attaches itself to `node`. `powerOnNodeId` is the address 0x3001 holds at power-on.
+  SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId) noexcept;
+
+  /// Runs the drive up to `now`; returns the next step.
+  Microseconds process(Microseconds now) noexcept;
+
+  /// Called when 0x3014 asks for factory defaults (the target discards stored parameters).
+  using FactoryResetHandler = void (*)(void* context) noexcept;
+  void onFactoryReset(FactoryResetHandler handler, void* context) noexcept {
+    factoryReset_ = handler;
+    factoryResetContext_ = context;
+  }
+
+  AbortCode prepareRead(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                        const ReadRequest& request) noexcept override;
+  AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
+                  size_t length) noexcept override;
+  void onResetApplication() noexcept override;
+  void onLifeGuardingExpired() noexcept override;
+
+ private:
+  DriveCommand command() const noexcept;
+  void publish(const DriveFeedback& feedback) noexcept;
+  void storeSfxt(uint16_t index, double value) noexcept;
+  double readSfxt(uint16_t index) const noexcept;
+  uint32_t readU32(uint16_t index) const noexcept;
+
+  Node& node_;
+  DriveBackend& drive_;
+  SoloErrorRegister errors_;
+  uint8_t powerOnNodeId_;
+  Microseconds simulated_ = 0;  ///< time up to which the drive has run
+  Microseconds identifyAt_ = kNever;
+  FactoryResetHandler factoryReset_ = nullptr;
+  void* factoryResetContext_ = nullptr;
+};
+
+}  // namespace costa::solo
