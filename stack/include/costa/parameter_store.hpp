@@ -51,12 +51,14 @@ class ParameterStore {
   ParameterStore& operator=(const ParameterStore&) = delete;
 
   /// Reserves a region for up to `maxLength` bytes of raw data under `recordId` (data that is
-  /// not in the dictionary, such as the LSS node-id and bit timing). Call before layOut().
-  /// False when `recordId` is already reserved or kMaxRecords are.
+  /// not in the dictionary, such as the LSS node-id and bit timing). Call before layOut(): a
+  /// reservation undoes the layout. False when `recordId` is already reserved or kMaxRecords
+  /// are.
   bool reserveRecord(uint8_t recordId, size_t maxLength) noexcept;
 
   /// Bytes of storage the regions need: groups by ascending number, then records by ascending
-  /// id, two slots each. SIZE_MAX when there would be more than kMaxRegions regions.
+  /// id, two slots each. SIZE_MAX when there would be more than kMaxRegions regions, or offsets
+  /// beyond 32 bits.
   size_t requiredSize() const noexcept;
   /// Places the regions. False (and nothing usable) when the storage is smaller than
   /// requiredSize(). Reads and writes nothing.
@@ -69,8 +71,8 @@ class ParameterStore {
   /// Stores the group's current values as the newest image.
   StoreResult save(uint8_t group) noexcept;
   /// Copies the newest intact image of the group into the dictionary. Anything but kOk leaves
-  /// the group's values as they were (except kMediumError in the middle of the copy, which
-  /// restores the group's defaults rather than leave a mix).
+  /// the group's values as they were, except when the medium fails or changes during the copy
+  /// (kMediumError, kCorrupt): then the group's defaults are restored rather than leave a mix.
   StoreResult load(uint8_t group) noexcept;
   /// Stores a "restore defaults" marker as the newest image: the next load() yields kNoImage
   /// and leaves the defaults (CiA 301 0x1011: takes effect at the next reset). The dictionary
