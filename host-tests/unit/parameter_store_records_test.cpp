@@ -1,0 +1,200 @@
+// Raw records (data that is not in the dictionary, such as the LSS node-id and bit timing):
+// reservation, layout after the groups, save/load/invalidate, limits, power loss.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "allocation_guard.hpp"
+#include "parameter_store_fixture.hpp"
+
+namespace costa::test {
+namespace {
+
+constexpr uint8_t kLssRecord = 0x05;  // e.g. node-id and bit timing
+constexpr uint8_t kOtherRecord = 0x01;
+
+class ParameterStoreRecordTest : public ExampleStoreTest {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(store_.reserveRecord(kLssRecord, 2));
+    ASSERT_TRUE(store_.reserveRecord(kOtherRecord, 16));
+    ASSERT_TRUE(store_.layOut());
+  }
+  /// Where a record's slot lies: after both groups, records by ascending id.
+  size_t recordSlot(uint8_t recordId, size_t slot) const {
+    const size_t groups = 2U * slotSize(kCommunication) + 2U * slotSize(kApplication);
+    const size_t other = kImageHeaderSize + 16U;
+    if (recordId == kOtherRecord) {
+      return groups + slot * other;
+    }
+    return groups + 2U * other + slot * (kImageHeaderSize + 2U);
+  }
+  struct Read {
+    StoreResult result;
+    std::vector<uint8_t> data;
+  };
+  Read loadRecordFresh(uint8_t recordId) {
+    ExampleDictionary fresh(gen::example::kDefinition);
+    ParameterStore store(fresh.dictionary, storage_);
+    if (!store.reserveRecord(kLssRecord, 2) || !store.reserveRecord(kOtherRecord, 16) ||
+        !store.layOut()) {
+      return {StoreResult::kNotLaidOut, {}};
+    }
+    uint8_t buffer[16];
+    size_t length = 99;
+    const StoreResult result = store.loadRecord(recordId, buffer, sizeof(buffer), &length);
+    return {result, std::vector<uint8_t>(buffer, buffer + length)};
+  }
+};
+
+TEST_F(ParameterStoreRecordTest, RecordsFollowTheGroupsInAscendingIdOrder) {
+  const size_t groups = 2U * slotSize(kCommunication) + 2U * slotSize(kApplication);
+  EXPECT_EQ(store_.requiredSize(),
+            groups + 2U * (kImageHeaderSize + 16U) + 2U * (kImageHeaderSize + 2U));
+  const uint8_t lss[2] = {0x20, 0x03};
+  ASSERT_EQ(store_.saveRecord(kLssRecord, lss, 2), StoreResult::kOk);
+  const SlotInfo info = inspectSlot(storage_, recordSlot(kLssRecord, 0), kImageHeaderSize + 2U);
+  ASSERT_EQ(info.state, SlotState::kIntact);
+  EXPECT_EQ(info.header.region, 0x0105U);
+  EXPECT_EQ(info.header.layout, 0U);
+  EXPECT_EQ(info.header.payloadLength, 2U);
+}
+
+TEST_F(ParameterStoreRecordTest, ASavedRecordComesBackWithItsLength) {
+  const uint8_t lss[2] = {0x20, 0x03};
+  const uint8_t other[5] = {1, 2, 3, 4, 5};
+  {
+    NoAllocationScope noAllocation;
+    EXPECT_EQ(store_.saveRecord(kLssRecord, lss, 2), StoreResult::kOk);
+    EXPECT_EQ(store_.saveRecord(kOtherRecord, other, 5), StoreResult::kOk);
+  }
+  EXPECT_EQ(loadRecordFresh(kLssRecord).data, (std::vector<uint8_t>{0x20, 0x03}));
+  const Read read = loadRecordFresh(kOtherRecord);
+  EXPECT_EQ(read.result, StoreResult::kOk);
+  EXPECT_EQ(read.data, (std::vector<uint8_t>{1, 2, 3, 4, 5}));
+
+  EXPECT_EQ(store_.saveRecord(kOtherRecord, other, 0), StoreResult::kOk);
+  const Read empty = loadRecordFresh(kOtherRecord);
+  EXPECT_EQ(empty.result, StoreResult::kOk) << "an empty record is not a missing record";
+  EXPECT_EQ(empty.data.size(), 0U);
+}
+
+TEST_F(ParameterStoreRecordTest, MissingAndInvalidatedRecordsHaveNoImage) {
+  const Read missing = loadRecordFresh(kLssRecord);
+  EXPECT_EQ(missing.result, StoreResult::kNoImage);
+  EXPECT_EQ(missing.data.size(), 0U);
+  const uint8_t lss[2] = {0x20, 0x03};
+  ASSERT_EQ(store_.saveRecord(kLssRecord, lss, 2), StoreResult::kOk);
+  EXPECT_EQ(store_.invalidateRecord(kLssRecord), StoreResult::kOk);
+  EXPECT_EQ(loadRecordFresh(kLssRecord).result, StoreResult::kNoImage);
+  ASSERT_EQ(store_.saveRecord(kLssRecord, lss, 1), StoreResult::kOk);
+  EXPECT_EQ(loadRecordFresh(kLssRecord).data, (std::vector<uint8_t>{0x20}));
+}
+
+TEST_F(ParameterStoreRecordTest, RecordsAndGroupsDoNotDisturbEachOther) {
+  const uint8_t lss[2] = {0x7F, 0x04};
+  ASSERT_EQ(store_.saveRecord(kLssRecord, lss, 2), StoreResult::kOk);
+  ASSERT_EQ(savePattern(kApplication, 3), StoreResult::kOk);
+  ASSERT_EQ(store_.invalidate(kApplication), StoreResult::kOk);
+  ASSERT_EQ(savePattern(kCommunication, 3), StoreResult::kOk);
+  EXPECT_EQ(loadRecordFresh(kLssRecord).data, (std::vector<uint8_t>{0x7F, 0x04}));
+  EXPECT_EQ(loadRecordFresh(kOtherRecord).result, StoreResult::kNoImage);
+}
+
+TEST_F(ParameterStoreRecordTest, LengthsBeyondTheReservationOrTheBufferAreRefused) {
+  const uint8_t data[17] = {};
+  EXPECT_EQ(store_.saveRecord(kLssRecord, data, 3), StoreResult::kTooLong);
+  EXPECT_EQ(store_.saveRecord(kOtherRecord, data, 17), StoreResult::kTooLong);
+  EXPECT_EQ(storage_.modifyingCalls(), 0U);
+
+  ASSERT_EQ(store_.saveRecord(kOtherRecord, data, 16), StoreResult::kOk);
+  uint8_t small[15];
+  std::fill(small, small + sizeof(small), 0xAA);
+  size_t length = 99;
+  EXPECT_EQ(store_.loadRecord(kOtherRecord, small, sizeof(small), &length), StoreResult::kTooLong);
+  EXPECT_EQ(length, 0U);
+  EXPECT_EQ(small[0], 0xAAU) << "nothing copied";
+}
+
+TEST_F(ParameterStoreRecordTest, UnknownRecordsAndReservationLimits) {
+  const uint8_t data[1] = {};
+  uint8_t buffer[4];
+  size_t length = 99;
+  EXPECT_EQ(store_.saveRecord(0x06, data, 1), StoreResult::kUnknownGroup);
+  EXPECT_EQ(store_.loadRecord(0x06, buffer, 4, &length), StoreResult::kUnknownGroup);
+  EXPECT_EQ(length, 0U);
+  EXPECT_EQ(store_.invalidateRecord(0x06), StoreResult::kUnknownGroup);
+  EXPECT_EQ(store_.load(kLssRecord), StoreResult::kUnknownGroup) << "records are not groups";
+  EXPECT_EQ(storage_.modifyingCalls(), 0U);
+
+  EXPECT_FALSE(store_.reserveRecord(kLssRecord, 4)) << "already reserved";
+  EXPECT_TRUE(store_.isLaidOut());
+  for (uint8_t id = 10; id < 10U + ParameterStore::kMaxRecords - 2U; ++id) {
+    EXPECT_TRUE(store_.reserveRecord(id, 1));
+  }
+  EXPECT_FALSE(store_.reserveRecord(100, 1)) << "table full";
+  EXPECT_FALSE(store_.isLaidOut()) << "a new reservation needs a new layout";
+  EXPECT_EQ(store_.saveRecord(kLssRecord, data, 1), StoreResult::kNotLaidOut);
+  EXPECT_EQ(store_.loadRecord(kLssRecord, buffer, 4, &length), StoreResult::kNotLaidOut);
+  EXPECT_EQ(store_.invalidateRecord(kLssRecord), StoreResult::kNotLaidOut);
+  EXPECT_TRUE(store_.layOut());
+  EXPECT_EQ(store_.saveRecord(11, data, 1), StoreResult::kOk);
+}
+
+TEST_F(ParameterStoreRecordTest, DamagedRecordsFailingAndTooSmallMedia) {
+  const uint8_t lss[2] = {0x20, 0x03};
+  ASSERT_EQ(store_.saveRecord(kLssRecord, lss, 2), StoreResult::kOk);
+  storage_.bytes()[recordSlot(kLssRecord, 0) + kImageHeaderSize] ^= 0x01U;
+  const Read read = loadRecordFresh(kLssRecord);
+  EXPECT_EQ(read.result, StoreResult::kCorrupt);
+  EXPECT_EQ(read.data.size(), 0U);
+
+  storage_.cutPowerAfter(0);
+  EXPECT_EQ(store_.saveRecord(kLssRecord, lss, 2), StoreResult::kMediumError);
+  EXPECT_EQ(store_.invalidateRecord(kLssRecord), StoreResult::kMediumError);
+  storage_.restorePower();
+  port::MemoryStorage truncated(storage_.bytes(), recordSlot(kLssRecord, 1));
+  ExampleDictionary fresh(gen::example::kDefinition);
+  ParameterStore store(fresh.dictionary, truncated);
+  ASSERT_TRUE(store.reserveRecord(kOtherRecord, 16));
+  ASSERT_TRUE(store.reserveRecord(kLssRecord, 2));
+  EXPECT_FALSE(store.layOut()) << "the medium ends inside the record's region";
+}
+
+TEST_F(ParameterStoreRecordTest, PowerLossDuringASaveOrInvalidateKeepsAWholeRecord) {
+  const uint8_t first[2] = {0x11, 0x11};
+  const uint8_t second[2] = {0x22, 0x22};
+  ASSERT_EQ(store_.saveRecord(kLssRecord, first, 2), StoreResult::kOk);
+  storage_.resetCounters();
+  ASSERT_EQ(store_.saveRecord(kLssRecord, second, 2), StoreResult::kOk);
+  const size_t total = storage_.bytesWritten() + storage_.bytesErased();
+  ASSERT_EQ(store_.saveRecord(kLssRecord, first, 2), StoreResult::kOk);
+  // Slot state now: "first" newest, "second" older. Alternate between the two sets.
+  std::vector<uint8_t> current{0x11, 0x11};
+  for (size_t cut = 0; cut <= total; ++cut) {
+    const bool toSecond = current[0] == 0x11;
+    storage_.cutPowerAfter(cut);
+    const StoreResult result = store_.saveRecord(kLssRecord, toSecond ? second : first, 2);
+    storage_.restorePower();
+    EXPECT_EQ(result == StoreResult::kOk, cut == total) << "cut after " << cut;
+    if (result == StoreResult::kOk) {
+      current = toSecond ? std::vector<uint8_t>{0x22, 0x22} : std::vector<uint8_t>{0x11, 0x11};
+    }
+    EXPECT_EQ(loadRecordFresh(kLssRecord).data, current) << "cut after " << cut;
+  }
+  // An invalidate programs the erase of the slot and the header.
+  const size_t invalidateTotal = kImageHeaderSize + 2U + kImageHeaderSize;
+  for (size_t cut = 0; cut < invalidateTotal; ++cut) {
+    storage_.cutPowerAfter(cut);
+    EXPECT_EQ(store_.invalidateRecord(kLssRecord), StoreResult::kMediumError);
+    storage_.restorePower();
+    EXPECT_EQ(loadRecordFresh(kLssRecord).data, current) << "cut after " << cut;
+  }
+  storage_.cutPowerAfter(invalidateTotal);
+  EXPECT_EQ(store_.invalidateRecord(kLssRecord), StoreResult::kOk);
+  storage_.restorePower();
+  EXPECT_EQ(loadRecordFresh(kLssRecord).result, StoreResult::kNoImage);
+}
+
+}  // namespace
+}  // namespace costa::test

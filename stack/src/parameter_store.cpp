@@ -1,0 +1,225 @@
+#include "costa/parameter_store.hpp"
+
+namespace costa {
+namespace {
+
+/// Calls `visit(address, size)` for every RAM entry of `group` in dictionary order; stops at
+/// the first false.
+template <typename Visit>
+bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit visit) noexcept {
+  const od::Definition& definition = dictionary.definition();
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    const od::Object& object = definition.objects[i];
+    for (size_t s = 0; s < object.subCount; ++s) {
+      const od::SubEntry& entry = object.subs[s];
+      if (entry.group != group || entry.size == 0U) {
+        continue;
+      }
+      uint8_t* address = dictionary.ramAddress(entry);
+      if (address != nullptr && !visit(address, static_cast<size_t>(entry.size))) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Ranks of what a slot holds: the higher one is kept, the lower one is written next.
+constexpr int kRankBlank = 0;
+constexpr int kRankDamaged = 1;
+constexpr int kRankForeign = 2;
+constexpr int kRankCurrent = 3;
+
+}  // namespace
+
+const char* toString(StoreResult result) noexcept {
+  switch (result) {
+    case StoreResult::kOk: return "ok";
+    case StoreResult::kNoImage: return "no image";
+    case StoreResult::kCorrupt: return "corrupt";
+    case StoreResult::kIncompatible: return "incompatible";
+    case StoreResult::kMediumError: return "medium error";
+    case StoreResult::kUnknownGroup: return "unknown group";
+    case StoreResult::kTooLong: return "too long";
+    case StoreResult::kNotLaidOut: return "not laid out";
+  }
+  return "?";
+}
+
+bool ParameterStore::isCurrent(const Region& region, size_t slot,
+                               const SlotInfo& info) const noexcept {
+  const ImageHeader& header = info.header;
+  if (info.state != SlotState::kIntact || header.formatVersion != kImageFormatVersion ||
+      header.region != region.id || header.location != slotOffset(region, slot)) {
+    return false;
+  }
+  if (header.kind == ImageKind::kDefaults) {
+    return header.payloadLength == 0U;
+  }
+  if (header.kind != ImageKind::kValues || header.layout != region.layout) {
+    return false;
+  }
+  const bool isRecord = (region.id & kRecordRegion) != 0U;
+  return isRecord ? header.payloadLength <= region.payloadCapacity
+                  : header.payloadLength == region.payloadCapacity;
+}
+
+int ParameterStore::rank(const Region& region, size_t slot, const SlotInfo& info) const noexcept {
+  switch (info.state) {
+    case SlotState::kIntact: return isCurrent(region, slot, info) ? kRankCurrent : kRankForeign;
+    case SlotState::kDamaged: return kRankDamaged;
+    case SlotState::kBlank:
+    case SlotState::kUnreadable: break;
+  }
+  return kRankBlank;
+}
+
+bool ParameterStore::examine(const Region& region, Examination* out) noexcept {
+  for (size_t slot = 0; slot < 2U; ++slot) {
+    out->slots[slot] = inspectSlot(storage_, slotOffset(region, slot), region.slotSize);
+    if (out->slots[slot].state == SlotState::kUnreadable) {
+      return false;
+    }
+  }
+  const int rank0 = rank(region, 0, out->slots[0]);
+  const int rank1 = rank(region, 1, out->slots[1]);
+  const bool secondIsNewer =
+      isNewerSequence(out->slots[1].header.sequence, out->slots[0].header.sequence);
+  // Slot 0 is kept only when it holds the better image: so that, among equals, slot 0 is the
+  // one written (the first save goes to slot 0).
+  const bool firstIsBetter =
+      rank0 > rank1 || (rank0 == kRankCurrent && rank1 == kRankCurrent && !secondIsNewer);
+  out->kept = firstIsBetter ? 0U : 1U;
+  const SlotInfo& kept = out->slots[out->kept];
+  switch (out->kept == 0U ? rank0 : rank1) {
+    case kRankCurrent:
+      out->verdict =
+          kept.header.kind == ImageKind::kValues ? StoreResult::kOk : StoreResult::kNoImage;
+      break;
+    case kRankForeign: out->verdict = StoreResult::kIncompatible; break;
+    case kRankDamaged: out->verdict = StoreResult::kCorrupt; break;
+    default: out->verdict = StoreResult::kNoImage; break;
+  }
+  out->nextSequence = kept.state == SlotState::kIntact ? kept.header.sequence + 1U : 1U;
+  return true;
+}
+
+StoreResult ParameterStore::writeImage(const Region& region, ImageKind kind, const uint8_t* data,
+                                       size_t length) noexcept {
+  Examination examination;
+  if (!examine(region, &examination)) {
+    return StoreResult::kMediumError;
+  }
+  const size_t target = 1U - examination.kept;
+  const size_t offset = slotOffset(region, target);
+  const bool isRecord = (region.id & kRecordRegion) != 0U;
+  const bool fromDictionary = kind == ImageKind::kValues && !isRecord;
+  ImageHeader header{};
+  header.formatVersion = kImageFormatVersion;
+  header.kind = kind;
+  header.region = region.id;
+  header.layout = region.layout;
+  header.location = static_cast<uint32_t>(offset);
+  header.payloadLength = static_cast<uint32_t>(fromDictionary ? region.payloadCapacity : length);
+  header.sequence = examination.nextSequence;
+
+  ImageWriter writer(storage_, offset, region.slotSize);
+  bool ok = writer.begin(header);
+  if (ok && fromDictionary) {
+    ok = forEachStoredEntry(
+        dictionary_, static_cast<uint8_t>(region.id),
+        [&writer](const uint8_t* address, size_t size) { return writer.append(address, size); });
+  } else if (ok && length != 0U) {
+    ok = writer.append(data, length);
+  }
+  return ok && writer.finish() ? StoreResult::kOk : StoreResult::kMediumError;
+}
+
+StoreResult ParameterStore::save(uint8_t group) noexcept {
+  const Region* region = nullptr;
+  const StoreResult found = findRegion(group, &region);
+  return found != StoreResult::kOk ? found : writeImage(*region, ImageKind::kValues, nullptr, 0);
+}
+
+StoreResult ParameterStore::invalidate(uint8_t group) noexcept {
+  const Region* region = nullptr;
+  const StoreResult found = findRegion(group, &region);
+  return found != StoreResult::kOk ? found : writeImage(*region, ImageKind::kDefaults, nullptr, 0);
+}
+
+StoreResult ParameterStore::load(uint8_t group) noexcept {
+  const Region* region = nullptr;
+  const StoreResult found = findRegion(group, &region);
+  if (found != StoreResult::kOk) {
+    return found;
+  }
+  Examination examination;
+  if (!examine(*region, &examination)) {
+    return StoreResult::kMediumError;
+  }
+  if (examination.verdict != StoreResult::kOk) {
+    return examination.verdict;
+  }
+  ImageReader reader(storage_, slotOffset(*region, examination.kept),
+                     examination.slots[examination.kept].header);
+  const bool copied = forEachStoredEntry(
+      dictionary_, group,
+      [&reader](uint8_t* address, size_t size) { return reader.read(address, size); });
+  if (copied && reader.matches()) {
+    return StoreResult::kOk;
+  }
+  // The medium changed since it was checked: never leave a mix of old and new values.
+  dictionary_.restoreGroupDefaults(group);
+  return copied ? StoreResult::kCorrupt : StoreResult::kMediumError;
+}
+
+StoreResult ParameterStore::saveRecord(uint8_t recordId, const uint8_t* data,
+                                       size_t length) noexcept {
+  const Region* region = nullptr;
+  const StoreResult found = findRegion(recordRegion(recordId), &region);
+  if (found != StoreResult::kOk) {
+    return found;
+  }
+  if (length > region->payloadCapacity) {
+    return StoreResult::kTooLong;
+  }
+  return writeImage(*region, ImageKind::kValues, data, length);
+}
+
+StoreResult ParameterStore::invalidateRecord(uint8_t recordId) noexcept {
+  const Region* region = nullptr;
+  const StoreResult found = findRegion(recordRegion(recordId), &region);
+  return found != StoreResult::kOk ? found : writeImage(*region, ImageKind::kDefaults, nullptr, 0);
+}
+
+StoreResult ParameterStore::loadRecord(uint8_t recordId, uint8_t* buffer, size_t capacity,
+                                       size_t* length) noexcept {
+  *length = 0;
+  const Region* region = nullptr;
+  const StoreResult found = findRegion(recordRegion(recordId), &region);
+  if (found != StoreResult::kOk) {
+    return found;
+  }
+  Examination examination;
+  if (!examine(*region, &examination)) {
+    return StoreResult::kMediumError;
+  }
+  if (examination.verdict != StoreResult::kOk) {
+    return examination.verdict;
+  }
+  const ImageHeader& header = examination.slots[examination.kept].header;
+  if (header.payloadLength > capacity) {
+    return StoreResult::kTooLong;
+  }
+  ImageReader reader(storage_, slotOffset(*region, examination.kept), header);
+  if (!reader.read(buffer, header.payloadLength)) {
+    return StoreResult::kMediumError;
+  }
+  if (!reader.matches()) {
+    return StoreResult::kCorrupt;
+  }
+  *length = header.payloadLength;
+  return StoreResult::kOk;
+}
+
+}  // namespace costa
