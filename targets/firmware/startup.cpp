@@ -37,6 +37,11 @@ int main();
   }
 }
 
+// An image that uses SysTick defines this handler; otherwise SysTick lands in the default one.
+__attribute__((weak)) void costa_systick_handler() {
+  costa_default_handler();
+}
+
 using Handler = void (*)();
 
 // Initial stack pointer, reset, and the Cortex-M system exceptions.
@@ -56,6 +61,6 @@ __attribute__((section(".vectors"), used)) const Handler costaVectorTable[16] = 
     costa_default_handler,  // DebugMonitor
     nullptr,
     costa_default_handler,  // PendSV
-    costa_default_handler,  // SysTick
+    costa_systick_handler,  // SysTick
 };
 }

@@ -1,0 +1,114 @@
+// A polled driver for one STM32 bxCAN controller (CAN1 of an STM32F4), at register level.
+//
+// Transmission: the three transmit mailboxes, sent in the order they were requested (TXFP), so
+// frames leave in the node's queue order. Reception: every frame (standard and extended, data
+// and remote) through filter bank 0 into FIFO 0. Status: error passive, bus-off and FIFO overrun
+// are reported as CanControllerEvent values for Node::onControllerEvent(). Bus-off recovery is
+// automatic (ABOM); the controller retransmits until a frame is acknowledged.
+//
+// Context: every member function is for the one context that runs the node (the main loop).
+// None may be called from an interrupt handler, and none may run while another is running:
+// they share the receive FIFO register (RF0R) and the driver's record of the error state. The
+// driver enables no interrupt; an integrator who wants to sleep until the bus is active may
+// enable one in CAN_IER after start() and only wake the main loop from the handler.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "costa/node.hpp"
+#include "costa/port/can_port.hpp"
+#include "costa/port/stm32/bxcan_registers.hpp"
+
+namespace costa::port::stm32 {
+
+/// The controller events found by one BxCanPort::poll(), in the order they happened (at most
+/// one overrun and two error state changes).
+class BxCanEvents {
+ public:
+  static constexpr size_t kCapacity = 3;
+
+  size_t size() const noexcept { return count_; }
+  bool empty() const noexcept { return count_ == 0; }
+  CanControllerEvent operator[](size_t i) const noexcept { return events_[i]; }
+  const CanControllerEvent* begin() const noexcept { return events_; }
+  const CanControllerEvent* end() const noexcept { return events_ + count_; }
+
+  void add(CanControllerEvent event) noexcept {
+    if (count_ < kCapacity) {
+      events_[count_++] = event;
+    }
+  }
+
+ private:
+  CanControllerEvent events_[kCapacity] = {};
+  size_t count_ = 0;
+};
+
+class BxCanPort final : public CanTransmitter {
+ public:
+  /// Bound on status reads while start() waits for the controller. At 168 MHz one read and the
+  /// loop around it take some tens of nanoseconds, so the default allows some tens of
+  /// milliseconds: enough to finish a frame in progress at 10 kbit/s before the controller
+  /// enters initialisation, and to see the bus idle (11 recessive bits) when it leaves.
+  static constexpr uint32_t kDefaultWaitLimit = 1000000;
+
+  /// Called once per status read while start() waits. Firmware may kick a watchdog here; host
+  /// tests play the hardware's part.
+  using WaitHook = void (*)(void* context);
+
+  /// `registers` is the controller's block: `bxCan1()` in firmware, a simulated block in tests.
+  /// Nothing is touched until start().
+  explicit BxCanPort(BxCanRegisters& registers, uint32_t waitLimit = kDefaultWaitLimit) noexcept
+      : registers_(registers), waitLimit_(waitLimit) {}
+
+  void setWaitHook(WaitHook hook, void* context) noexcept {
+    waitHook_ = hook;
+    waitContext_ = context;
+  }
+
+  /// Configures the controller and joins the bus:
+  ///   1. leaves sleep mode and requests initialisation; waits for INAK (bounded);
+  ///   2. MCR: automatic bus-off management, automatic retransmission, transmit order by
+  ///      request, FIFO not locked (when FIFO 0 is full, a new message overwrites the last one
+  ///      stored: reported as overrun); the debug freeze bit (DBF) is kept as it was;
+  ///   3. CAN_BTR = `btr` (see bxcan_bit_timing.hpp; loop back and silent bits are passed on);
+  ///   4. filter bank 0: 32-bit mask mode, identifier 0, mask 0 (accept all), FIFO 0, active;
+  ///      the other banks and CAN2's start bank are left as they are;
+  ///   5. leaves initialisation; waits until the controller has seen the bus idle (bounded).
+  /// Returns false when the controller did not acknowledge step 1 (no clock to the
+  /// peripheral?) or did not join the bus in step 5 (CANRX held dominant: transceiver missing
+  /// or unpowered?). In the second case it joins as soon as the bus goes idle. May be called
+  /// again to restart; the error state the driver remembers is reset to error active.
+  bool start(uint32_t btr) noexcept;
+
+  /// Hands `frame` to a free transmit mailbox and requests its transmission. False, touching
+  /// nothing, when all three mailboxes are pending. A DLC above 8 is sent as 8.
+  bool tryTransmit(const CanFrame& frame) noexcept override;
+
+  /// Takes the oldest message out of receive FIFO 0 and releases it. False when the FIFO is
+  /// empty. Data bytes at and after the DLC (all of them for a remote frame) are zero; a DLC
+  /// above 8 is passed on as received (the stack ignores such frames).
+  bool receive(CanFrame* frame) noexcept;
+
+  /// Reads the error state and FIFO 0 and returns what changed since the last poll() (or
+  /// start()): kRxOverrun when a message was lost (the flag is then cleared), kErrorPassive /
+  /// kErrorActive when EPVF rose / fell, kBusOff / kBusOffRecovered when BOFF rose / fell.
+  /// Within one poll: overrun first, then recovery from bus-off, then the error passive change,
+  /// then bus-off. Call it at least every 128 x 11 bit times (1.4 ms at 1 Mbit/s) so that a
+  /// bus-off and its automatic recovery are not both missed.
+  BxCanEvents poll() noexcept;
+
+ private:
+  bool waitForStatus(uint32_t mask, uint32_t expected) noexcept;
+  void acceptEverythingIntoFifo0() noexcept;
+
+  BxCanRegisters& registers_;
+  uint32_t waitLimit_;
+  WaitHook waitHook_ = nullptr;
+  void* waitContext_ = nullptr;
+  bool errorPassive_ = false;
+  bool busOff_ = false;
+};
+
+}  // namespace costa::port::stm32

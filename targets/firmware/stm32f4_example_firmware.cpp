@@ -1,0 +1,49 @@
+// The example device on an STM32F4: CAN1 through the bxCAN driver, time from SysTick.
+// See port/stm32/README.md; the board assumptions are in stm32f4_board.hpp.
+#include "costa/port/stm32/bxcan_bit_timing.hpp"
+#include "costa/port/stm32/bxcan_port.hpp"
+#include "example_target.hpp"
+#include "stm32f4_board.hpp"
+#include "systick_clock.hpp"
+
+namespace {
+
+using costa::port::stm32::bxCanBitTiming;
+using costa::port::stm32::BxCanBitTiming;
+
+constexpr uint32_t kBitRate = 250000;
+constexpr BxCanBitTiming kTiming = bxCanBitTiming(costa::firmware::stm32f4::kApb1ClockHz, kBitRate);
+static_assert(kTiming.valid(), "APB1 clock cannot produce the bit rate exactly");
+constexpr uint8_t kNodeId = 1;
+
+[[noreturn]] void halt() {
+  for (;;) {
+  }
+}
+
+}  // namespace
+
+int main() {
+  costa::firmware::stm32f4::connectCan1ToPb8Pb9();
+  costa::firmware::SysTickClock clock;
+  if (!clock.start(costa::firmware::stm32f4::kCoreClockHz)) {
+    halt();
+  }
+  costa::port::stm32::BxCanPort can(costa::port::stm32::bxCan1());
+  if (!can.start(kTiming.btr())) {
+    halt();  // no acknowledge from the controller, or the bus never went idle
+  }
+  costa::example::ExampleTarget target(can, kNodeId);
+  target.start(clock.nowMicroseconds());
+  for (;;) {
+    const costa::Microseconds now = clock.nowMicroseconds();
+    for (const costa::CanControllerEvent event : can.poll()) {
+      target.node().onControllerEvent(event, now);
+    }
+    costa::CanFrame frame;
+    while (can.receive(&frame)) {
+      target.onFrame(frame, now);
+    }
+    target.process(now);  // timers, and frames that waited for a free mailbox
+  }
+}
