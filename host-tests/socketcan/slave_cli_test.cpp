@@ -116,8 +116,10 @@ TEST(SlaveCommandLine, BadArgumentsAreOneLineAndNonZero) {
   };
   const Case cases[] = {
       {{"toaster"}, "costa-slave: unknown device 'toaster'"},
-      {{"--node-id", "0", "example"}, "costa-slave: invalid node-id '0': expected 1..127\n"},
-      {{"--node-id", "300", "example"}, "costa-slave: invalid node-id '300': expected 1..127\n"},
+      {{"--node-id", "0", "example"},
+       "costa-slave: invalid node-id '0': expected 1..127 (or 255: unconfigured, LSS only)\n"},
+      {{"--node-id", "300", "example"},
+       "costa-slave: invalid node-id '300': expected 1..127 (or 255: unconfigured, LSS only)\n"},
       {{}, "costa-slave: no DEVICE given"},
   };
   for (const Case& c : cases) {

@@ -22,8 +22,8 @@ namespace costa::test {
 /// An example device built with explicit settings (for profile-specific behaviour).
 inline InProcessBus::Factory exampleWith(const NodeSettings& settings) {
   return [settings](CanTransmitter& can) -> std::unique_ptr<host::DeviceTarget> {
-    return std::make_unique<host::HostedTarget<example::ExampleTarget>>(&gen::example::kNames, can,
-                                                                        settings);
+    return std::make_unique<host::HostedTarget<example::ExampleTarget>>(&gen::example::kNames,
+                                                                        nullptr, can, settings);
   };
 }
 

@@ -29,6 +29,8 @@ TEST(SlaveOptions, DefaultsAndEveryDocumentedOption) {
   EXPECT_EQ(options.device, "example");
   ASSERT_TRUE(parse({"example", "--node-id", "127"}, &options, &error));
   EXPECT_EQ(options.nodeId, 127);
+  ASSERT_TRUE(parse({"example", "--node-id", "0xFF"}, &options, &error));  // LSS only
+  EXPECT_EQ(options.nodeId, 255);
 }
 
 TEST(SlaveOptions, HelpNeedsNoDevice) {
@@ -45,8 +47,9 @@ TEST(SlaveOptions, RejectsBadInputWithOneClearLine) {
   SlaveOptions options;
   std::string error;
   EXPECT_FALSE(parse({"--node-id", "0", "example"}, &options, &error));
-  EXPECT_EQ(error, "invalid node-id '0': expected 1..127");
+  EXPECT_EQ(error, "invalid node-id '0': expected 1..127 (or 255: unconfigured, LSS only)");
   EXPECT_FALSE(parse({"--node-id", "128", "example"}, &options, &error));
+  EXPECT_FALSE(parse({"--node-id", "254", "example"}, &options, &error));
   EXPECT_FALSE(parse({"--node-id", "1x", "example"}, &options, &error));
   EXPECT_FALSE(parse({"--node-id"}, &options, &error));
   EXPECT_EQ(error, "--node-id needs a value");

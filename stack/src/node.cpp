@@ -33,6 +33,13 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       guarding_(dictionary_, tx_, clock_),
       sync_(dictionary_, tx_, emcy_, clock_),
       pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
+      store_(dictionary_, settings.storage != nullptr ? *settings.storage : noStorage_),
+      storeCommands_(settings.storage != nullptr ? &store_ : nullptr, settings.storeAllGroups,
+                     settings.restoreAllGroups),
+      lssBridge_(*this),
+      autoSave_(*this),
+      lss_(tx_, lssBridge_),
+      bitTiming_(settings.bitTiming),
       nodeId_(settings.nodeId),
       pendingNodeId_(settings.nodeId) {
   hooks_.attach(EmcyProducer::kErrorHistoryIndex, EmcyProducer::kErrorHistoryIndex, emcy_);
@@ -43,6 +50,11 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
   hooks_.attach(HeartbeatConsumer::kIndex, HeartbeatConsumer::kIndex, heartbeatConsumer_);
   hooks_.attach(HeartbeatProducer::kIndex, HeartbeatProducer::kIndex, heartbeat_);
   hooks_.attach(PdoEngine::kFirst, PdoEngine::kLast, pdos_);
+  hooks_.attach(StoreCommands::kStoreIndex, StoreCommands::kRestoreIndex, storeCommands_);
+  storeCommands_.setRestoreAllListener(&lssBridge_);
+  if (settings_.saveParametersOnWrite) {
+    access_.setObserver(&autoSave_);
+  }
   pdos_.bind();
 }
 
@@ -58,26 +70,95 @@ void Node::advanceClock(Microseconds now) noexcept {
 
 void Node::start(Microseconds now) noexcept {
   advanceClock(now);
+  if (settings_.storage != nullptr) {
+    store_.reserveRecord(kLssRecord, 3);
+    storageReady_ = store_.layOut();
+    loadLssConfiguration();
+  }
   resetNode();
+}
+
+void Node::loadLssConfiguration() noexcept {
+  uint8_t record[3] = {};
+  size_t length = 0;
+  const StoreResult result = store_.loadRecord(kLssRecord, record, sizeof(record), &length);
+  if (result == StoreResult::kOk && length == sizeof(record)) {
+    if (settings_.storedNodeIdWins) {
+      pendingNodeId_ = record[0];
+    }
+    bitTiming_ = LssBitTiming{record[1], record[2]};
+  } else if (result == StoreResult::kCorrupt || result == StoreResult::kIncompatible ||
+             result == StoreResult::kMediumError) {
+    invalid_.add(od::kGroupLss, result);
+  }
+}
+
+void Node::loadGroups(uint32_t groups) noexcept {
+  if (!storageReady_) {
+    return;
+  }
+  for (uint8_t group = 1; group < 32U; ++group) {
+    if ((groups & groupBit(group)) == 0U || !store_.hasGroup(group)) {
+      continue;
+    }
+    const StoreResult result = store_.load(group);
+    if (result == StoreResult::kCorrupt || result == StoreResult::kIncompatible ||
+        result == StoreResult::kMediumError) {
+      invalid_.add(group, result);
+    }
+  }
+}
+
+void Node::reportInvalidParameters() noexcept {
+  for (size_t i = 0; i < invalid_.count; ++i) {
+    if (events_ != nullptr) {
+      events_->onStoredParametersInvalid(invalid_.groups[i], invalid_.results[i]);
+    }
+  }
+  invalid_.count = 0;
 }
 
 void Node::resetNode() noexcept {
   setState(NmtState::kInitialising);
   dictionary_.setNodeId(pendingNodeId_);
   dictionary_.restoreDefaults(kApplicationFirst, kApplicationLast);
+  loadGroups(~(groupBit(od::kGroupCommunication) | groupBit(od::kGroupLss)));
   if (events_ != nullptr) {
     events_->onResetApplication();
   }
+  reportInvalidParameters();
   resetCommunication();
+}
+
+LssIdentity Node::identity() const noexcept {
+  LssIdentity id;
+  id.vendorId = static_cast<uint32_t>(dictionary_.readUnsigned(0x1018, 1, 0));
+  id.productCode = static_cast<uint32_t>(dictionary_.readUnsigned(0x1018, 2, 0));
+  id.revisionNumber = static_cast<uint32_t>(dictionary_.readUnsigned(0x1018, 3, 0));
+  id.serialNumber = static_cast<uint32_t>(dictionary_.readUnsigned(0x1018, 4, 0));
+  return id;
 }
 
 void Node::resetCommunication() noexcept {
   setState(NmtState::kInitialising);
   sdo_.reset();
   heartbeat_.stop();
-  nodeId_ = pendingNodeId_;
+  if (settings_.lss && lss_.pendingNodeId() != lss_.activeNodeId()) {
+    pendingNodeId_ = lss_.pendingNodeId();  // configured by LSS: applies now (CiA 305)
+  }
+  nodeId_ = cob::isValidNodeId(pendingNodeId_) ? pendingNodeId_ : cob::kLssUnconfigured;
   dictionary_.setNodeId(nodeId_);
   dictionary_.restoreDefaults(kCommunicationFirst, kCommunicationLast);
+  loadGroups(groupBit(od::kGroupCommunication) | groupBit(od::kGroupLss));
+  if (events_ != nullptr) {
+    events_->onResetCommunication();  // the application may adjust the communication area
+  }
+  lss_.reset(identity(), nodeId_, nodeId_, bitTiming_);
+  reportInvalidParameters();
+  if (nodeId_ == cob::kLssUnconfigured) {
+    flushTx();  // no node-id: the node waits, silent, for LSS to give it one (CiA 305)
+    return;
+  }
   sdo_.setNodeId(nodeId_);
   heartbeat_.setNodeId(nodeId_);
   emcy_.setNodeId(nodeId_);
@@ -86,9 +167,6 @@ void Node::resetCommunication() noexcept {
   heartbeatConsumer_.configure(true);
   sync_.configure(clock_.now);
   pdos_.configure();
-  if (events_ != nullptr) {
-    events_->onResetCommunication();
-  }
   CanFrame bootUp;
   bootUp.id = cob::kErrorControlBase + nodeId_;
   bootUp.dlc = 1;
@@ -174,6 +252,48 @@ void Node::onControllerEvent(CanControllerEvent event, Microseconds now) noexcep
       break;
   }
   process(clock_.now);
+}
+
+LssStoreResult Node::storeLssConfiguration(uint8_t nodeId, LssBitTiming timing) noexcept {
+  if (!storageReady_) {
+    return LssStoreResult::kNotSupported;
+  }
+  const uint8_t record[3] = {nodeId, timing.tableSelector, timing.tableIndex};
+  return store_.saveRecord(kLssRecord, record, sizeof(record)) == StoreResult::kOk
+             ? LssStoreResult::kStored
+             : LssStoreResult::kStorageAccessError;
+}
+
+bool Node::LssBridge::bitTimingSupported(LssBitTiming timing) noexcept {
+  return timing.tableSelector == 0U && timing.tableIndex < 16U &&
+         (node_.settings_.lssBitRates & (1U << timing.tableIndex)) != 0U;
+}
+
+void Node::LssBridge::activateBitTiming(LssBitTiming timing) noexcept {
+  node_.bitTiming_ = timing;
+  if (node_.events_ != nullptr) {
+    node_.events_->onBitTimingActivation(timing);
+  }
+}
+
+LssStoreResult Node::LssBridge::storeConfiguration(uint8_t nodeId, LssBitTiming timing) noexcept {
+  return node_.storeLssConfiguration(nodeId, timing);
+}
+
+void Node::LssBridge::requestResetCommunication() noexcept {
+  node_.resetCommunication();
+}
+
+void Node::AutoSave::onWritten(const od::EntryRef& ref, bool changed) noexcept {
+  if (changed && ref.entry->group != od::kGroupNone && node_.storageReady_) {
+    node_.store_.save(ref.entry->group);
+  }
+}
+
+void Node::LssBridge::onRestoreAll() noexcept {
+  if (node_.settings_.restoreAllIncludesLss && node_.storageReady_) {
+    node_.store_.invalidateRecord(kLssRecord);
+  }
 }
 
 }  // namespace costa

@@ -12,7 +12,11 @@ void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
     return;
   }
   bool used = false;
-  if (frame.id == cob::kNmt) {
+  if (frame.id == cob::kLssFromMaster && settings_.lss) {
+    used = lss_.onFrame(frame, clock_.now);
+  } else if (nodeId_ == cob::kLssUnconfigured) {
+    used = false;  // LSS only until the node has a node-id
+  } else if (frame.id == cob::kNmt) {
     const NmtSlave::Decision decision = NmtSlave::decide(frame, nodeId_, state_);
     used = true;
     switch (decision.action) {
@@ -99,6 +103,7 @@ Microseconds Node::process(Microseconds now) noexcept {
   advanceClock(now);
   const Microseconds at = clock_.now;
   sdo_.process(at);
+  lss_.process(at);
   if (state_ != NmtState::kInitialising) {
     heartbeat_.process(at, state_);
     if (guarding_.process(at) == NodeGuarding::Event::kLifeTimeExpired) {
@@ -133,11 +138,12 @@ Microseconds Node::process(Microseconds now) noexcept {
   next = earliest(next, sync_.nextDeadline());
   next = earliest(next, pdos_.nextDeadline());
   next = earliest(next, emcy_.nextDeadline(state_));
+  next = earliest(next, lss_.nextDeadline());
   return next;
 }
 
 void Node::flushTx() noexcept {
-  while (!tx_.empty() && !busOff_) {
+  while (!tx_.empty() && !busOff_ && !lss_.transmissionSuspended()) {
     const QueuedFrame& queued = tx_.front();
     if (queued.expiry != kNever && clock_.now > queued.expiry) {
       tx_.expireFront();

@@ -7,7 +7,8 @@ constexpr uint8_t kRestartUptime = 1;
 constexpr uint8_t kSelfTest = 3;
 }  // namespace
 
-ExampleDevice::ExampleDevice(Node& node) noexcept : node_(node) {
+ExampleDevice::ExampleDevice(Node& node, uint32_t serialNumber) noexcept
+    : node_(node), serialNumber_(serialNumber) {
   node.attachHook(kCommand, kCommand, *this);
   node.attachHook(kOperatingMode, kOperatingMode, *this);
   node.setEvents(this);
@@ -15,6 +16,10 @@ ExampleDevice::ExampleDevice(Node& node) noexcept : node_(node) {
 
 void ExampleDevice::onResetApplication() noexcept {
   epoch_ = node_.now();
+}
+
+void ExampleDevice::onResetCommunication() noexcept {
+  node_.dictionary().storeUnsigned(0x1018, 4, serialNumber_);
 }
 
 Microseconds ExampleDevice::process(Microseconds now) noexcept {

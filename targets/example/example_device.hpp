@@ -18,8 +18,9 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   static constexpr uint16_t kCommand = 0x2002;
   static constexpr uint16_t kOperatingMode = 0x2010;
 
-  /// Attaches itself to `node` (hooks and events). Call before `node.start()`.
-  explicit ExampleDevice(Node& node) noexcept;
+  /// Attaches itself to `node` (hooks and events). Call before `node.start()`. `serialNumber`
+  /// goes into 0x1018:04 (so that several example nodes can be told apart by LSS).
+  explicit ExampleDevice(Node& node, uint32_t serialNumber = 1) noexcept;
 
   /// Updates the uptime object. Returns the time of the next update.
   Microseconds process(Microseconds now) noexcept;
@@ -27,9 +28,11 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
   void onResetApplication() noexcept override;
+  void onResetCommunication() noexcept override;
 
  private:
   Node& node_;
+  uint32_t serialNumber_;
   Microseconds epoch_ = 0;
 };
 

@@ -11,9 +11,11 @@ class ExampleTarget {
  public:
   using Dictionary = NodeInstance<gen::example::Values, gen::example::Capacity>;
 
-  ExampleTarget(CanTransmitter& can, uint8_t nodeId) noexcept;
+  /// `storage` (may be null) keeps parameters and the LSS configuration across power cycles.
+  ExampleTarget(CanTransmitter& can, uint8_t nodeId, NvStorage* storage = nullptr) noexcept;
   /// With explicit settings (node-id, profile, ...), for tests of profile-specific behaviour.
-  ExampleTarget(CanTransmitter& can, const NodeSettings& settings) noexcept;
+  ExampleTarget(CanTransmitter& can, const NodeSettings& settings,
+                uint32_t serialNumber = 1) noexcept;
 
   void start(Microseconds now) noexcept { node_.start(now); }
   void onFrame(const CanFrame& frame, Microseconds now) noexcept { node_.onFrame(frame, now); }
@@ -22,9 +24,10 @@ class ExampleTarget {
 
   Dictionary& node() noexcept { return node_; }
 
- private:
-  static NodeSettings settings(uint8_t nodeId) noexcept;
+  /// The example's settings: LSS on, bit rates of the CiA 305 table, optional storage.
+  static NodeSettings settings(uint8_t nodeId, NvStorage* storage) noexcept;
 
+ private:
   Dictionary node_;
   ExampleDevice device_;
 };

@@ -9,6 +9,7 @@
 #include "costa/node.hpp"
 #include "costa/od/definition.hpp"
 #include "costa/port/can_port.hpp"
+#include "costa/port/linux/file_storage.hpp"
 
 namespace costa::host {
 
@@ -35,9 +36,11 @@ class DeviceTarget {
 template <typename Composition>
 class HostedTarget final : public DeviceTarget {
  public:
+  /// `storage` (may be null) is owned by the target and outlives the composition.
   template <typename... Args>
-  explicit HostedTarget(const od::NameTable* names, Args&&... args)
-      : composition_(std::forward<Args>(args)...), names_(names) {}
+  HostedTarget(const od::NameTable* names, std::unique_ptr<port::FileStorage> storage,
+               Args&&... args)
+      : storage_(std::move(storage)), composition_(std::forward<Args>(args)...), names_(names) {}
 
   void start(Microseconds now) override { composition_.start(now); }
   void onFrame(const CanFrame& frame, Microseconds now) override {
@@ -49,6 +52,7 @@ class HostedTarget final : public DeviceTarget {
   Composition& composition() { return composition_; }
 
  private:
+  std::unique_ptr<port::FileStorage> storage_;
   Composition composition_;
   const od::NameTable* names_;
 };

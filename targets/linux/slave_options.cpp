@@ -15,7 +15,8 @@ bool parseNodeId(const std::string& text, int* value) {
   char* end = nullptr;
   errno = 0;
   const long parsed = std::strtol(text.c_str(), &end, 0);
-  if (errno != 0 || end == nullptr || *end != '\0' || parsed < 1 || parsed > 127) {
+  const bool valid = (parsed >= 1 && parsed <= 127) || parsed == 255;  // 255: unconfigured (LSS)
+  if (errno != 0 || end == nullptr || *end != '\0' || !valid) {
     return false;
   }
   *value = static_cast<int>(parsed);
@@ -30,7 +31,8 @@ std::string slaveUsage() {
          "Runs a CANopen slave device on a SocketCAN interface.\n"
          "\n"
          "  --iface NAME     CAN interface (default vcan0)\n"
-         "  --node-id N      node-id 1..127 (decimal or 0x hex; default: the device's own)\n"
+         "  --node-id N      node-id 1..127 (decimal or 0x hex; default: the device's own);\n"
+         "                   255 starts without a node-id, waiting for LSS\n"
          "  --storage FILE   file holding the device's non-volatile parameters\n"
          "  --trace          print every frame received and sent, with its meaning\n"
          "  --list-devices   list the devices and exit\n"
@@ -72,7 +74,7 @@ bool parseSlaveOptions(const std::vector<std::string>& arguments, SlaveOptions* 
         return false;
       }
       if (!parseNodeId(text, &options->nodeId)) {
-        *error = "invalid node-id '" + text + "': expected 1..127";
+        *error = "invalid node-id '" + text + "': expected 1..127 (or 255: unconfigured, LSS only)";
         return false;
       }
     } else if (!argument.empty() && argument[0] == '-') {

@@ -22,8 +22,13 @@ int32_t roundToInt32(double value) {
 
 }  // namespace
 
-SoloDevice::SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId) noexcept
-    : node_(node), drive_(drive), errors_(node), powerOnNodeId_(powerOnNodeId) {
+SoloDevice::SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId,
+                       bool explicitNodeId) noexcept
+    : node_(node),
+      drive_(drive),
+      errors_(node),
+      powerOnNodeId_(powerOnNodeId),
+      explicitNodeId_(explicitNodeId) {
   node.attachHook(kFirstObject, kLastObject, *this);
   node.setEvents(this);
 }
@@ -141,8 +146,8 @@ AbortCode SoloDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef
   const uint32_t value = loadU32(data);
   switch (ref.index()) {
     case 0x3001:
-      powerOnNodeId_ = static_cast<uint8_t>(value);
-      node_.setPendingNodeId(powerOnNodeId_);
+      explicitNodeId_ = false;  // the new address is kept (M) and used from the next reset on
+      node_.setPendingNodeId(static_cast<uint8_t>(value));
       break;
     case 0x3007:
       if (value == 1U) {
@@ -167,7 +172,12 @@ AbortCode SoloDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef
 }
 
 void SoloDevice::onResetApplication() noexcept {
-  node_.dictionary().storeUnsigned(0x3001, 0, powerOnNodeId_);
+  // 0x3001 now holds its stored value (or its default); a command-line address overrides it.
+  if (explicitNodeId_) {
+    node_.dictionary().storeUnsigned(0x3001, 0, powerOnNodeId_);
+  }
+  const uint32_t address = readU32(0x3001);
+  node_.setPendingNodeId(static_cast<uint8_t>(address == 0U ? 1U : address));
   errors_.assign(0);
   simulated_ = node_.now();
   identifyAt_ = kNever;

@@ -22,8 +22,9 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   /// The drive is simulated in steps of this length.
   static constexpr Microseconds kStep = 10000;
 
-  /// Attaches itself to `node`. `powerOnNodeId` is the address 0x3001 holds at power-on.
-  SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId) noexcept;
+  /// Attaches itself to `node`. `powerOnNodeId` is the address when 0x3001 holds nothing
+  /// stored, or always when `explicitNodeId` (a command-line override).
+  SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId, bool explicitNodeId) noexcept;
 
   /// Runs the drive up to `now`; returns the next step.
   Microseconds process(Microseconds now) noexcept;
@@ -53,6 +54,7 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   DriveBackend& drive_;
   SoloErrorRegister errors_;
   uint8_t powerOnNodeId_;
+  bool explicitNodeId_;
   Microseconds simulated_ = 0;  ///< time up to which the drive has run
   Microseconds identifyAt_ = kNever;
   FactoryResetHandler factoryReset_ = nullptr;

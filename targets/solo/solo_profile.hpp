@@ -43,9 +43,12 @@ constexpr DeviceProfile profile() noexcept {
   return p;
 }
 
-inline NodeSettings settings(uint8_t nodeId) noexcept {
+/// The SOLO keeps every M object as soon as it is written (it has no store command).
+inline NodeSettings settings(uint8_t nodeId, NvStorage* storage) noexcept {
   NodeSettings s;
   s.nodeId = nodeId;
+  s.storage = storage;
+  s.saveParametersOnWrite = true;
   s.profile = profile();
   s.staticPdoMappings =
       StaticPdoMappings{kPdoMappings, sizeof(kPdoMappings) / sizeof(kPdoMappings[0])};

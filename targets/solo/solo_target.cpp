@@ -4,9 +4,21 @@
 
 namespace costa::solo {
 
-SoloTarget::SoloTarget(CanTransmitter& can, uint8_t nodeId) noexcept
-    : node_(gen::solo::kDefinition, can, settings(address(nodeId))),
-      device_(node_, drive_, address(nodeId)) {}
+SoloTarget::SoloTarget(CanTransmitter& can, uint8_t nodeId, NvStorage* storage,
+                       bool explicitNodeId) noexcept
+    : node_(gen::solo::kDefinition, can,
+            settings(address(nodeId), storage != nullptr ? storage : &eeprom_)),
+      device_(node_, drive_, address(nodeId), explicitNodeId) {
+  device_.onFactoryReset(&SoloTarget::discardStoredParameters, this);
+}
+
+void SoloTarget::discardStoredParameters(void* target) noexcept {
+  ParameterStore* store = static_cast<SoloTarget*>(target)->node_.parameterStore();
+  if (store != nullptr) {
+    store->invalidate(od::kGroupCommunication);
+    store->invalidate(od::kGroupApplication);
+  }
+}
 
 Microseconds SoloTarget::process(Microseconds now) noexcept {
   const Microseconds deviceNext = device_.process(now);

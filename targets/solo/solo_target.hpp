@@ -3,6 +3,7 @@
 #pragma once
 
 #include "costa/node.hpp"
+#include "costa/port/memory/memory_storage.hpp"
 #include "simulated_drive.hpp"
 #include "solo_device.hpp"
 #include "solo_od.hpp"
@@ -13,8 +14,15 @@ class SoloTarget {
  public:
   using Dictionary = NodeInstance<gen::solo::Values, gen::solo::Capacity>;
 
-  /// `nodeId`: the device address at power-on (0x3001); 0 means 1 (manual line 861).
-  SoloTarget(CanTransmitter& can, uint8_t nodeId) noexcept;
+  /// Bytes of the SOLO's parameter memory.
+  static constexpr size_t kEepromBytes = 4096;
+
+  /// `nodeId`: the device address (0x3001) at power-on when nothing is stored, or always when
+  /// `explicitNodeId`; 0 means 1 (manual line 861). `storage` keeps the M objects across power
+  /// cycles; without it they live in RAM (kept across NMT resets, like the SOLO's EEPROM, but
+  /// not beyond the process).
+  SoloTarget(CanTransmitter& can, uint8_t nodeId, NvStorage* storage = nullptr,
+             bool explicitNodeId = false) noexcept;
 
   void start(Microseconds now) noexcept { node_.start(now); }
   void onFrame(const CanFrame& frame, Microseconds now) noexcept { node_.onFrame(frame, now); }
@@ -26,6 +34,9 @@ class SoloTarget {
  private:
   static uint8_t address(uint8_t nodeId) noexcept { return nodeId == 0U ? 1U : nodeId; }
 
+  static void discardStoredParameters(void* target) noexcept;
+
+  port::MemoryStorageOf<kEepromBytes> eeprom_;
   Dictionary node_;
   SimulatedDrive drive_;
   SoloDevice device_;

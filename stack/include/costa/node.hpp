@@ -19,15 +19,19 @@
 #include "costa/heartbeat_consumer.hpp"
 #include "costa/heartbeat_producer.hpp"
 #include "costa/hook_registry.hpp"
+#include "costa/lss_slave.hpp"
 #include "costa/nmt_state.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/node_events.hpp"
 #include "costa/node_guarding.hpp"
 #include "costa/object_access.hpp"
 #include "costa/od/object_dictionary.hpp"
+#include "costa/parameter_store.hpp"
 #include "costa/pdo_engine.hpp"
 #include "costa/port/can_port.hpp"
+#include "costa/port/nv_storage.hpp"
 #include "costa/sdo_server.hpp"
+#include "costa/store_commands.hpp"
 #include "costa/sync_service.hpp"
 #include "costa/time.hpp"
 #include "costa/tx_queue.hpp"
@@ -55,11 +59,27 @@ struct NodeMemory {
   size_t heartbeatMonitorCapacity;
 };
 
+/// Every storage group saved and restored by "all" (0x1010/0x1011 sub-index 1) by default: all
+/// but the LSS group, which LSS stores on its own.
+inline constexpr uint32_t kAllGroupsButLss = ~(groupBit(od::kGroupNone) | groupBit(od::kGroupLss));
+
 struct NodeSettings {
-  uint8_t nodeId = 1;                                          ///< 1..127.
-  DeviceProfile profile{};                                     ///< Device-specific wire behaviour.
+  uint8_t nodeId = 1;       ///< 1..127, or 0xFF: no node-id yet (LSS only until configured).
+  DeviceProfile profile{};  ///< Device-specific wire behaviour.
   Microseconds sdoTimeout = millisecondsToMicroseconds(1000);  ///< Segmented transfer timeout.
   StaticPdoMappings staticPdoMappings{};  ///< Mappings of PDOs without a mapping object.
+  /// Non-volatile storage of parameters (0x1010/0x1011) and of the LSS configuration; null: none.
+  NvStorage* storage = nullptr;
+  uint32_t storeAllGroups = kAllGroupsButLss;    ///< groups "save" to 0x1010:01 stores
+  uint32_t restoreAllGroups = kAllGroupsButLss;  ///< groups "load" to 0x1011:01 restores
+  bool restoreAllIncludesLss = false;  ///< 0x1011:01 also discards the stored LSS configuration
+  bool lss = false;                    ///< CiA 305 LSS slave on 0x7E5 / 0x7E4
+  uint16_t lssBitRates = 0;            ///< CiA 305 table indices the controller can switch to
+  LssBitTiming bitTiming{0, 3};        ///< bit timing at power-on (CiA 305 index 3: 250 kbit/s)
+  bool storedNodeIdWins = true;        ///< a stored LSS node-id replaces `nodeId` at power-on
+  /// Every remote write that changes a stored entry saves its group at once (devices that keep
+  /// parameters without a store command). CiA 301 saves only on 0x1010.
+  bool saveParametersOnWrite = false;
 };
 
 /// Signals from the CAN controller's driver (CiA 301 EMCY codes 0x81xx).
@@ -86,6 +106,7 @@ class Node {
   static constexpr uint16_t kEmcyRxOverrun = 0x8110;
   static constexpr uint16_t kEmcyErrorPassive = 0x8120;
   static constexpr uint16_t kEmcyBusOffRecovered = 0x8140;
+  static constexpr uint8_t kLssRecord = 1;  ///< ParameterStore record of the LSS configuration
 
   Node(const od::Definition& definition, const NodeMemory& memory, CanTransmitter& can,
        const NodeSettings& settings) noexcept;
@@ -155,6 +176,13 @@ class Node {
   const NodeStatistics& statistics() const noexcept { return statistics_; }
   const DeviceProfile& profile() const noexcept { return settings_.profile; }
   const HeartbeatConsumer& heartbeatConsumer() const noexcept { return heartbeatConsumer_; }
+  const LssSlave& lss() const noexcept { return lss_; }
+  /// Bit timing in use (CiA 305 table selector and index).
+  LssBitTiming bitTiming() const noexcept { return bitTiming_; }
+  /// The parameter store when the node has storage (laid out), else null.
+  ParameterStore* parameterStore() noexcept { return storageReady_ ? &store_ : nullptr; }
+  /// Stores the LSS configuration (node-id, bit timing) as LSS "store configuration" does.
+  LssStoreResult storeLssConfiguration(uint8_t nodeId, LssBitTiming timing) noexcept;
   const PdoEngine& pdos() const noexcept { return pdos_; }
   Microseconds now() const noexcept { return clock_.now; }
 
@@ -166,6 +194,34 @@ class Node {
   void handleHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept;
   void onCommunicationError() noexcept;
   bool emcyAllowed() const noexcept;
+  void loadGroups(uint32_t groups) noexcept;
+  void reportInvalidParameters() noexcept;
+  void loadLssConfiguration() noexcept;
+  LssIdentity identity() const noexcept;
+
+  /// The node's side of the LSS slave and of "restore all".
+  class LssBridge final : public LssSlaveHost, public StoreCommands::RestoreAllListener {
+   public:
+    explicit LssBridge(Node& node) noexcept : node_(node) {}
+    bool bitTimingSupported(LssBitTiming timing) noexcept override;
+    void activateBitTiming(LssBitTiming timing) noexcept override;
+    LssStoreResult storeConfiguration(uint8_t nodeId, LssBitTiming timing) noexcept override;
+    void requestResetCommunication() noexcept override;
+    void onRestoreAll() noexcept override;
+
+   private:
+    Node& node_;
+  };
+  class NoStorage final : public NvStorage {};
+  /// Saves the group of a changed entry when NodeSettings::saveParametersOnWrite.
+  class AutoSave final : public WriteObserver {
+   public:
+    explicit AutoSave(Node& node) noexcept : node_(node) {}
+    void onWritten(const od::EntryRef& ref, bool changed) noexcept override;
+
+   private:
+    Node& node_;
+  };
 
   NodeSettings settings_;
   od::ObjectDictionary dictionary_;
@@ -183,6 +239,26 @@ class Node {
   NodeGuarding guarding_;
   SyncService sync_;
   PdoEngine pdos_;
+  NoStorage noStorage_;
+  ParameterStore store_;
+  bool storageReady_ = false;
+  StoreCommands storeCommands_;
+  LssBridge lssBridge_;
+  AutoSave autoSave_;
+  LssSlave lss_;
+  LssBitTiming bitTiming_;
+  struct InvalidParameters {
+    uint8_t groups[8] = {};
+    StoreResult results[8] = {};
+    size_t count = 0;
+    void add(uint8_t group, StoreResult result) noexcept {
+      if (count < 8U) {
+        groups[count] = group;
+        results[count] = result;
+        ++count;
+      }
+    }
+  } invalid_;
   NodeStatistics statistics_;
   NmtState state_ = NmtState::kInitialising;
   uint8_t nodeId_;

@@ -3,7 +3,9 @@
 
 #include <stdint.h>
 
+#include "costa/lss_slave.hpp"
 #include "costa/nmt_state.hpp"
+#include "costa/parameter_store.hpp"
 
 namespace costa {
 
@@ -20,7 +22,8 @@ class NodeEvents {
   /// been set to their power-on values; re-initialise the device behind them.
   virtual void onResetApplication() noexcept {}
   /// Reset communication: the communication area (0x1000..0x1FFF) has just been set to its
-  /// power-on values; the boot-up frame follows.
+  /// power-on values (the application may adjust them here, e.g. a serial number in 0x1018);
+  /// the services start from them and the boot-up frame follows.
   virtual void onResetCommunication() noexcept {}
   /// An RPDO's data has just been written into the dictionary (at reception or at the SYNC).
   virtual void onRpdoReceived(uint16_t communicationIndex) noexcept { (void)communicationIndex; }
@@ -35,6 +38,15 @@ class NodeEvents {
   /// arriving again.
   virtual void onLifeGuardingExpired() noexcept {}
   virtual void onLifeGuardingResumed() noexcept {}
+  /// Stored parameters of `group` (or of the LSS configuration: group od::kGroupLss) could not
+  /// be loaded at a reset: `result` is kCorrupt, kIncompatible or kMediumError. The defaults
+  /// are in place. Called after onResetApplication / onResetCommunication.
+  virtual void onStoredParametersInvalid(uint8_t group, StoreResult result) noexcept {
+    (void)group;
+    (void)result;
+  }
+  /// LSS activate bit timing: the controller must switch to `timing` now (CiA 305 table).
+  virtual void onBitTimingActivation(LssBitTiming timing) noexcept { (void)timing; }
   /// The CAN controller went bus-off / recovered.
   virtual void onBusOff() noexcept {}
   virtual void onBusOffRecovered() noexcept {}

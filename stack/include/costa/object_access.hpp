@@ -11,6 +11,22 @@
 
 namespace costa {
 
+/// Told of every successful remote write (SDO or RPDO), after the hook has run.
+class WriteObserver {
+ public:
+  /// `changed` is false when the entry held the same bytes before.
+  virtual void onWritten(const od::EntryRef& ref, bool changed) noexcept {
+    (void)ref;
+    (void)changed;
+  }
+
+ protected:
+  WriteObserver() = default;
+  ~WriteObserver() = default;
+  WriteObserver(const WriteObserver&) = default;
+  WriteObserver& operator=(const WriteObserver&) = default;
+};
+
 class ObjectAccess {
  public:
   ObjectAccess(od::ObjectDictionary& dictionary, const HookRegistry& hooks) noexcept
@@ -29,7 +45,10 @@ class ObjectAccess {
   /// Writes a located entry through its hook (or the plain dictionary).
   AbortCode write(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
 
+  void setObserver(WriteObserver* observer) noexcept { observer_ = observer; }
+
  private:
+  WriteObserver* observer_ = nullptr;
   od::ObjectDictionary& dictionary_;
   const HookRegistry& hooks_;
 };
