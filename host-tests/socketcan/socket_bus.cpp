@@ -1,6 +1,13 @@
 #include "socket_bus.hpp"
 
+#include <poll.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <atomic>
 #include <chrono>
+#include <cstring>
 #include <thread>
 
 namespace costa::test {
@@ -9,8 +16,11 @@ SocketBus::SocketBus(const std::string& device, int nodeId, const std::vector<st
   if (!socket_.open(testInterface(), &error_)) {
     return;
   }
-  std::vector<std::string> arguments = {"--iface", testInterface(), "--node-id",
-                                        std::to_string(nodeId)};
+  static std::atomic<int> counter{0};
+  controlPath_ = "/tmp/costa-control-" + std::to_string(::getpid()) + "-" +
+                 std::to_string(counter.fetch_add(1));
+  std::vector<std::string> arguments = {"--iface",   testInterface(),       "--node-id",
+                                        std::to_string(nodeId), "--control", controlPath_};
   arguments.insert(arguments.end(), extra.begin(), extra.end());
   arguments.push_back(device);
   slave_ = std::make_unique<SlaveProcess>(arguments);
@@ -22,6 +32,38 @@ void SocketBus::send(const CanFrame& frame) {
 
 bool SocketBus::receive(CanFrame* frame, int timeoutMs) {
   return socket_.receive(frame, timeoutMs);
+}
+
+std::string SocketBus::simulate(const std::string& command) {
+  const int fd = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) {
+    return "cannot create a socket";
+  }
+  sockaddr_un own{};
+  own.sun_family = AF_UNIX;
+  ::bind(fd, reinterpret_cast<sockaddr*>(&own), sizeof(sa_family_t));  // autobind: replies
+  sockaddr_un target{};
+  target.sun_family = AF_UNIX;
+  std::memcpy(target.sun_path, controlPath_.c_str(), controlPath_.size());
+  std::string result = "costa-slave did not answer on " + controlPath_;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (std::chrono::steady_clock::now() < end) {
+    if (::sendto(fd, command.data(), command.size(), 0, reinterpret_cast<sockaddr*>(&target),
+                 sizeof(target)) < 0) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));  // not listening yet
+      continue;
+    }
+    pollfd descriptor{fd, POLLIN, 0};
+    if (::poll(&descriptor, 1, kSocketReceiveTimeoutMs) > 0) {
+      char reply[512];
+      const ssize_t got = ::recv(fd, reply, sizeof(reply), 0);
+      const std::string text(reply, got > 0 ? static_cast<size_t>(got) : 0U);
+      result = text == "ok" ? "" : text;
+    }
+    break;
+  }
+  ::close(fd);
+  return result;
 }
 
 void SocketBus::wait(uint64_t milliseconds) {

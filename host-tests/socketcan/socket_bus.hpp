@@ -25,12 +25,15 @@ class SocketBus : public TranscriptBus {
   bool receive(CanFrame* frame, int timeoutMs) override;
   void wait(uint64_t milliseconds) override;
   bool checksTiming() const override { return false; }
+  /// Sends the command to costa-slave's --control socket and waits for its answer.
+  std::string simulate(const std::string& command) override;
 
   SlaveProcess& slave() { return *slave_; }
 
  private:
   RawCanSocket socket_;
   std::unique_ptr<SlaveProcess> slave_;
+  std::string controlPath_;
   std::string error_;
 };
 

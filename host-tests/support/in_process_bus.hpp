@@ -25,6 +25,7 @@ class InProcessBus : public TranscriptBus {
   bool receive(CanFrame* frame, int timeoutMs) override;
   void wait(uint64_t milliseconds) override;
   bool checksTiming() const override { return true; }
+  std::string simulate(const std::string& command) override { return target_->control(command); }
 
   /// Advances virtual time by `microseconds`, running every deadline on the way.
   void advance(Microseconds microseconds);

@@ -62,6 +62,25 @@ bool parseTranscript(const std::string& text, const std::string& path, Transcrip
       step.milliseconds = static_cast<uint64_t>(ms);
     } else if (keyword == "silence") {
       step.kind = TranscriptStep::Kind::kSilence;
+    } else if (keyword == "sim") {
+      step.kind = TranscriptStep::Kind::kSimulate;
+      step.text = rest.substr(rest.find_first_not_of(' ') == std::string::npos
+                                  ? rest.size()
+                                  : rest.find_first_not_of(' '));
+      while (!step.text.empty() && (step.text.back() == ' ' || step.text.back() == '\t')) {
+        step.text.pop_back();
+      }
+      if (step.text.empty()) {
+        return fail("sim needs a command");
+      }
+    } else if (keyword == "ignore") {
+      unsigned long id = 0;
+      std::istringstream idText(rest);
+      if (!(idText >> std::hex >> id) || id > 0x7FF) {
+        return fail("ignore needs an 11-bit CAN-ID in hex");
+      }
+      transcript->ignored.push_back(static_cast<uint32_t>(id));
+      continue;
     } else {
       return fail("unknown keyword '" + keyword + "'");
     }

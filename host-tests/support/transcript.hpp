@@ -10,6 +10,10 @@
 //   wait 1000               1000 ms pass (virtual time in-process, real time over SocketCAN)
 //   silence                 the slave has sent nothing more so far (checked in-process only:
 //                           over SocketCAN, timing is not asserted)
+//   sim raw 12288 12288     a command to the device's simulation (DeviceTarget::control;
+//                           over SocketCAN through costa-slave --control)
+//   ignore 1FF              frames on this CAN-ID that no `tx` step is waiting for are skipped
+//                           (periodic frames the transcript does not follow)
 //
 // Every frame the slave sends must be matched by a `tx` line, in order.
 #pragma once
@@ -24,7 +28,7 @@
 namespace costa::test {
 
 struct TranscriptStep {
-  enum class Kind { kReceive, kTransmit, kWait, kSilence };
+  enum class Kind { kReceive, kTransmit, kWait, kSilence, kSimulate };
   Kind kind = Kind::kSilence;
   CanFrame frame;
   unsigned wildcards = 0;  ///< Data bytes written `xx` (kTransmit).
@@ -38,6 +42,7 @@ struct Transcript {
   std::string device;
   int nodeId = 1;
   std::vector<TranscriptStep> steps;
+  std::vector<uint32_t> ignored;  ///< CAN-IDs of `ignore` lines
 };
 
 /// Parses a transcript file. On error returns false with "path:line: message" in `error`.

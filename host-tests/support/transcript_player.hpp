@@ -22,6 +22,8 @@ class TranscriptBus {
   virtual void wait(uint64_t milliseconds) = 0;
   /// Whether `silence` steps are checked (virtual time only).
   virtual bool checksTiming() const = 0;
+  /// A command to the device's simulation; "" when done, else why not.
+  virtual std::string simulate(const std::string& command) = 0;
 };
 
 /// Plays every step. Returns "" on success, else a report naming the step's line, the expected

@@ -142,8 +142,8 @@ const Expected kManual[] = {
     number(0x5000, 0, kU8, kRw, 1, kApp).limits(0, 1),              // 552, E16
     number(0x5001, 0, kU8, kRw, 0, kApp).limits(0, 1),              // 553
     number(0x5999, 0, kU8, kConst, 3),                              // 555
-    number(0x5999, 1, kU16, kRw, 250, kGroupLss).limits(50, 1000),  // 556, E26
-    number(0x5999, 2, kU8, kRw, 0x7F, kGroupLss).limits(1, 127),    // 557, E1
+    number(0x5999, 1, kU16, kRw, 250).limits(50, 1000),  // 556, E26; the LSS record (E22)
+    number(0x5999, 2, kU8, kRw, 0x7F).limits(1, 127),    // 557, E1; the LSS record
     number(0x5999, 3, kU32, kWo, 0),                                // 558
 };
 

@@ -88,6 +88,9 @@ class LssBus : public TranscriptBus {
 
   void wait(uint64_t milliseconds) override { advance(millisecondsToMicroseconds(milliseconds)); }
   bool checksTiming() const override { return true; }
+  std::string simulate(const std::string& command) override {
+    return "no simulation here: " + command;
+  }
 
   /// Advances virtual time, calling process() at every deadline on the way and at the end.
   void advance(Microseconds microseconds) {

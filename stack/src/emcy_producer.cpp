@@ -34,7 +34,7 @@ void EmcyProducer::onResetCommunication() noexcept {
 }
 
 uint8_t EmcyProducer::errorRegister() const noexcept {
-  if (count_ == 0U) {
+  if (count_ == 0U || !profile_.reportErrorRegister) {
     return 0;
   }
   uint8_t value = kErrorGeneric;
@@ -42,6 +42,13 @@ uint8_t EmcyProducer::errorRegister() const noexcept {
     value = static_cast<uint8_t>(value | conditions_[i].registerBits);
   }
   return value;
+}
+
+uint8_t EmcyProducer::frameRegister(uint8_t registerBits) const noexcept {
+  if (!profile_.reportErrorRegister) {
+    return 0;
+  }
+  return static_cast<uint8_t>(errorRegister() | kErrorGeneric | registerBits);
 }
 
 bool EmcyProducer::active(uint16_t code, uint8_t source) const noexcept {
@@ -63,9 +70,8 @@ bool EmcyProducer::raise(uint16_t code, uint8_t source, uint8_t registerBits,
     conditions_[count_++] = EmcyCondition{code, source, registerBits};
   }
   publishRegister();
-  const auto registerValue = static_cast<uint8_t>(errorRegister() | kErrorGeneric | registerBits);
   record(code, manufacturer);
-  enqueue(code, registerValue, manufacturer);
+  enqueue(code, frameRegister(registerBits), manufacturer);
   return stored;
 }
 
@@ -87,7 +93,7 @@ bool EmcyProducer::clear(uint16_t code, uint8_t source) noexcept {
 void EmcyProducer::signal(uint16_t code, uint8_t registerBits,
                           const uint8_t* manufacturer) noexcept {
   record(code, manufacturer);
-  enqueue(code, static_cast<uint8_t>(errorRegister() | kErrorGeneric | registerBits), manufacturer);
+  enqueue(code, frameRegister(registerBits), manufacturer);
 }
 
 void EmcyProducer::publishRegister() noexcept {

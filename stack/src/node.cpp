@@ -40,6 +40,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       autoSave_(*this),
       lss_(tx_, lssBridge_),
       bitTiming_(settings.bitTiming),
+      pendingBitTiming_(settings.bitTiming),
       nodeId_(settings.nodeId),
       pendingNodeId_(settings.nodeId) {
   hooks_.attach(EmcyProducer::kErrorHistoryIndex, EmcyProducer::kErrorHistoryIndex, emcy_);
@@ -73,20 +74,27 @@ void Node::start(Microseconds now) noexcept {
   if (settings_.storage != nullptr) {
     store_.reserveRecord(kLssRecord, 3);
     storageReady_ = store_.layOut();
-    loadLssConfiguration();
   }
+  powerOn_ = true;
   resetNode();
 }
 
 void Node::loadLssConfiguration() noexcept {
+  // Power-on values: the settings, replaced by a stored LSS configuration (at power-on only
+  // when `storedNodeIdWins`: a node-id given by the integrator applies to the first start).
+  pendingNodeId_ = settings_.nodeId;
+  pendingBitTiming_ = settings_.bitTiming;
+  if (!storageReady_) {
+    return;
+  }
   uint8_t record[3] = {};
   size_t length = 0;
   const StoreResult result = store_.loadRecord(kLssRecord, record, sizeof(record), &length);
   if (result == StoreResult::kOk && length == sizeof(record)) {
-    if (settings_.storedNodeIdWins) {
+    if (settings_.storedNodeIdWins || !powerOn_) {
       pendingNodeId_ = record[0];
     }
-    bitTiming_ = LssBitTiming{record[1], record[2]};
+    pendingBitTiming_ = LssBitTiming{record[1], record[2]};
   } else if (result == StoreResult::kCorrupt || result == StoreResult::kIncompatible ||
              result == StoreResult::kMediumError) {
     invalid_.add(od::kGroupLss, result);
@@ -120,6 +128,8 @@ void Node::reportInvalidParameters() noexcept {
 
 void Node::resetNode() noexcept {
   setState(NmtState::kInitialising);
+  loadLssConfiguration();  // reset node is a power-on reset of the application (CiA 301)
+  powerOn_ = false;
   dictionary_.setNodeId(pendingNodeId_);
   dictionary_.restoreDefaults(kApplicationFirst, kApplicationLast);
   loadGroups(~(groupBit(od::kGroupCommunication) | groupBit(od::kGroupLss)));
@@ -147,6 +157,7 @@ void Node::resetCommunication() noexcept {
     pendingNodeId_ = lss_.pendingNodeId();  // configured by LSS: applies now (CiA 305)
   }
   nodeId_ = cob::isValidNodeId(pendingNodeId_) ? pendingNodeId_ : cob::kLssUnconfigured;
+  bitTiming_ = pendingBitTiming_;
   dictionary_.setNodeId(nodeId_);
   dictionary_.restoreDefaults(kCommunicationFirst, kCommunicationLast);
   loadGroups(groupBit(od::kGroupCommunication) | groupBit(od::kGroupLss));
@@ -271,6 +282,7 @@ bool Node::LssBridge::bitTimingSupported(LssBitTiming timing) noexcept {
 
 void Node::LssBridge::activateBitTiming(LssBitTiming timing) noexcept {
   node_.bitTiming_ = timing;
+  node_.pendingBitTiming_ = timing;
   if (node_.events_ != nullptr) {
     node_.events_->onBitTimingActivation(timing);
   }

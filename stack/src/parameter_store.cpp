@@ -24,6 +24,25 @@ bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit v
   return true;
 }
 
+/// Entries whose default is `$NODEID + n` are stored without the node-id, so that they follow a
+/// new node-id (an EMCY COB-ID 0x80 + id stays 0x80 + the new id). `sign` -1 before a save,
+/// +1 after a save and after a load.
+void shiftNodeIdRelative(od::ObjectDictionary& dictionary, uint8_t group, int sign) noexcept {
+  const od::Definition& definition = dictionary.definition();
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    const od::Object& object = definition.objects[i];
+    for (size_t s = 0; s < object.subCount; ++s) {
+      const od::SubEntry& entry = object.subs[s];
+      if (entry.group == group && (entry.attributes & od::kNodeIdRelative) != 0U &&
+          dictionary.ramAddress(entry) != nullptr) {
+        const uint64_t value = dictionary.readUnsigned(entry);
+        const uint64_t id = dictionary.nodeId();
+        dictionary.storeUnsigned(entry, sign < 0 ? value - id : value + id);
+      }
+    }
+  }
+}
+
 // Ranks of what a slot holds: the higher one is kept, the lower one is written next.
 constexpr int kRankBlank = 0;
 constexpr int kRankDamaged = 1;
@@ -138,7 +157,13 @@ StoreResult ParameterStore::writeImage(const Region& region, ImageKind kind, con
 StoreResult ParameterStore::save(uint8_t group) noexcept {
   const Region* region = nullptr;
   const StoreResult found = findRegion(group, &region);
-  return found != StoreResult::kOk ? found : writeImage(*region, ImageKind::kValues, nullptr, 0);
+  if (found != StoreResult::kOk) {
+    return found;
+  }
+  shiftNodeIdRelative(dictionary_, group, -1);
+  const StoreResult written = writeImage(*region, ImageKind::kValues, nullptr, 0);
+  shiftNodeIdRelative(dictionary_, group, +1);
+  return written;
 }
 
 StoreResult ParameterStore::invalidate(uint8_t group) noexcept {
@@ -166,6 +191,7 @@ StoreResult ParameterStore::load(uint8_t group) noexcept {
       dictionary_, group,
       [&reader](uint8_t* address, size_t size) { return reader.read(address, size); });
   if (copied && reader.matches()) {
+    shiftNodeIdRelative(dictionary_, group, +1);
     return StoreResult::kOk;
   }
   // The medium changed since it was checked: never leave a mix of old and new values.

@@ -1,7 +1,13 @@
 #include "device_registry.hpp"
 
+#include <sstream>
+
 #include "costa/port/linux/file_storage.hpp"
+#include "angle_model.hpp"
 #include "example_od.hpp"
+#include "gefran_target.hpp"
+#include "gra_od.hpp"
+#include "grn_od.hpp"
 #include "example_target.hpp"
 #include "solo_od.hpp"
 #include "solo_target.hpp"
@@ -52,12 +58,86 @@ std::unique_ptr<DeviceTarget> createSolo(CanTransmitter& can, const TargetOption
                                                           can, nodeId, raw, explicitNodeId);
 }
 
+/// Simulation commands of a GRA/GRN:
+///   raw A B          raw 14-bit readings of chip 1 and chip 2 (0..16383)
+///   angle DEG        both chips at the shaft angle DEG (degrees)
+///   fault WHAT on|off  WHAT = chip1, chip2 or magnet
+template <typename Target>
+std::string controlGefran(Target& target, const std::string& command) {
+  std::istringstream in(command);
+  std::string verb;
+  in >> verb;
+  if (verb == "raw") {
+    long a = -1;
+    long b = -1;
+    if (!(in >> a >> b) || a < 0 || a > 16383 || b < 0 || b > 16383) {
+      return "usage: raw A B (0..16383)";
+    }
+    target.sensors().setRaw(static_cast<uint16_t>(a), static_cast<uint16_t>(b));
+  } else if (verb == "angle") {
+    double degrees = 0;
+    if (!(in >> degrees)) {
+      return "usage: angle DEGREES";
+    }
+    const uint16_t raw = gefran::rawFromDegrees(degrees);
+    target.sensors().setRaw(raw, raw);
+  } else if (verb == "fault") {
+    std::string what;
+    std::string state;
+    in >> what >> state;
+    const uint8_t bits = what == "chip1"    ? gefran::kChip1Error
+                         : what == "chip2"  ? gefran::kChip2Error
+                         : what == "magnet" ? gefran::kMagneticField
+                                            : 0;
+    if (bits == 0 || (state != "on" && state != "off")) {
+      return "usage: fault chip1|chip2|magnet on|off";
+    }
+    target.sensors().setFault(bits, state == "on");
+  } else {
+    return "unknown command '" + verb + "' (raw, angle, fault)";
+  }
+  target.process(target.node().now());
+  return "";
+}
+
+template <typename Values, typename Capacity>
+std::unique_ptr<DeviceTarget> createGefran(const od::Definition& definition,
+                                           const od::NameTable& names, CanTransmitter& can,
+                                           const TargetOptions& options, std::string* error) {
+  std::unique_ptr<port::FileStorage> storage;
+  if (!openStorage(options, &storage, error)) {
+    return nullptr;
+  }
+  using Target = gefran::GefranTarget<Values, Capacity>;
+  const auto nodeId =
+      static_cast<uint8_t>(options.nodeId < 0 ? gefran::kFactoryNodeId : options.nodeId);
+  NvStorage* raw = storage.get();
+  auto target = std::make_unique<HostedTarget<Target>>(&names, std::move(storage), definition,
+                                                       can, nodeId, raw, options.nodeId >= 0);
+  target->setController(&controlGefran<Target>);
+  return target;
+}
+
+std::unique_ptr<DeviceTarget> createGra(CanTransmitter& can, const TargetOptions& options,
+                                        std::string* error) {
+  return createGefran<gen::gra::Values, gen::gra::Capacity>(gen::gra::kDefinition,
+                                                            gen::gra::kNames, can, options, error);
+}
+
+std::unique_ptr<DeviceTarget> createGrn(CanTransmitter& can, const TargetOptions& options,
+                                        std::string* error) {
+  return createGefran<gen::grn::Values, gen::grn::Capacity>(gen::grn::kDefinition,
+                                                            gen::grn::kNames, can, options, error);
+}
+
 }  // namespace
 
 const std::vector<DeviceEntry>& devices() {
   static const std::vector<DeviceEntry> table = {
       {"example", "Costa example device (every access type, several data types)", createExample},
       {"solo", "SOLO UNO / SOLO MINI motor controller with a simulated motor", createSolo},
+      {"gra", "Gefran GRA contactless angle sensor (with shaft), simulated hall chips", createGra},
+      {"grn", "Gefran GRN contactless angle sensor (without shaft)", createGrn},
   };
   return table;
 }

@@ -3,6 +3,7 @@
 
 #include <stdint.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -29,6 +30,12 @@ class DeviceTarget {
   virtual Node& node() = 0;
   /// Names of the dictionary's entries (for traces).
   virtual const od::NameTable* names() const = 0;
+  /// A command to the device's simulation (costa-slave --control, transcript `sim`); returns ""
+  /// when done, else one line saying why not.
+  virtual std::string control(const std::string& command) {
+    (void)command;
+    return "this device has no simulation commands";
+  }
 };
 
 /// Adapts a device composition (a class with start/onFrame/process/node, as firmware uses it)
@@ -51,7 +58,15 @@ class HostedTarget final : public DeviceTarget {
   const od::NameTable* names() const override { return names_; }
   Composition& composition() { return composition_; }
 
+  using Controller = std::function<std::string(Composition&, const std::string&)>;
+  /// Handles control() commands for this composition.
+  void setController(Controller controller) { controller_ = std::move(controller); }
+  std::string control(const std::string& command) override {
+    return controller_ ? controller_(composition_, command) : DeviceTarget::control(command);
+  }
+
  private:
+  Controller controller_;
   std::unique_ptr<port::FileStorage> storage_;
   Composition composition_;
   const od::NameTable* names_;

@@ -35,6 +35,8 @@ std::string slaveUsage() {
          "                   255 starts without a node-id, waiting for LSS\n"
          "  --storage FILE   file holding the device's non-volatile parameters\n"
          "  --trace          print every frame received and sent, with its meaning\n"
+         "  --control PATH   accept simulation commands (for example 'angle 90' for gra/grn) as\n"
+         "                   datagrams on a UNIX socket at PATH; each gets 'ok' or 'error: ...'\n"
          "  --list-devices   list the devices and exit\n"
          "  --help           show this help and exit\n"
          "\n"
@@ -66,6 +68,10 @@ bool parseSlaveOptions(const std::vector<std::string>& arguments, SlaveOptions* 
       }
     } else if (argument == "--storage") {
       if (!value(&options->storagePath)) {
+        return false;
+      }
+    } else if (argument == "--control") {
+      if (!value(&options->controlPath)) {
         return false;
       }
     } else if (argument == "--node-id") {

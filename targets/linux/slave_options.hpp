@@ -11,6 +11,7 @@ struct SlaveOptions {
   std::string interfaceName = "vcan0";
   int nodeId = -1;  ///< -1: the device's default.
   std::string storagePath;
+  std::string controlPath;  ///< --control: a UNIX datagram socket for simulation commands
   bool trace = false;
   bool help = false;
   bool listDevices = false;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "costa/port/linux/monotonic_clock.hpp"
+#include "control_socket.hpp"
 #include "costa/port/linux/socketcan_port.hpp"
 #include "device_registry.hpp"
 #include "frame_text.hpp"
@@ -107,6 +108,11 @@ int runSlave(const SlaveOptions& options) {
     return 1;
   }
   tracer.attach(target.get());
+  ControlSocket control;
+  if (!options.controlPath.empty() && !control.open(options.controlPath, &error)) {
+    std::fprintf(stderr, "costa-slave: %s\n", error.c_str());
+    return 1;
+  }
 
   struct sigaction action {};
   action.sa_handler = onStopSignal;
@@ -131,9 +137,17 @@ int runSlave(const SlaveOptions& options) {
     const Microseconds deadline = target->process(now);
     const int timeout =
         timeoutMilliseconds(deadline, clock.nowMicroseconds(), target->node().txPending());
-    pollfd descriptor{socket.fd(), POLLIN, 0};
+    pollfd descriptors[2] = {{socket.fd(), POLLIN, 0}, {control.fd(), POLLIN, 0}};
+    pollfd& descriptor = descriptors[0];
     const timespec wait{timeout / 1000, static_cast<long>(timeout % 1000) * 1000000L};
-    const int ready = ppoll(&descriptor, 1, &wait, &waiting);  // signals arrive only here
+    const nfds_t count = control.fd() >= 0 ? 2U : 1U;
+    const int ready = ppoll(descriptors, count, &wait, &waiting);  // signals arrive only here
+    if (ready > 0 && count == 2U && (descriptors[1].revents & POLLIN) != 0) {
+      control.serve([&](const std::string& command) {
+        std::fprintf(stderr, "costa-slave: control: %s\n", command.c_str());
+        return target->control(command);
+      });
+    }
     if (ready < 0 && errno != EINTR) {
       std::fprintf(stderr, "costa-slave: poll failed: %s\n", std::strerror(errno));
       return 1;

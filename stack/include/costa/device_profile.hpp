@@ -76,6 +76,9 @@ struct DeviceProfile {
   bool distinguishHighAndLowValues = true;
   /// An EMCY with error code 0x0000 when the last error condition clears (CiA 301).
   bool emcyOnErrorReset = true;
+  /// The error register 0x1001 (and the EMCY's register byte) reflects the active errors. When
+  /// false both always read 0 (a device that does not implement the register).
+  bool reportErrorRegister = true;
   /// The node reports life-guarding and heartbeat-consumer errors with EMCY 0x8130 itself; when
   /// false only the application events fire and the device reports them its own way.
   bool emcyForErrorControl = true;

@@ -86,6 +86,8 @@ class EmcyProducer : public ObjectHook {
 
  private:
   void enqueue(uint16_t code, uint8_t registerValue, const uint8_t* manufacturer) noexcept;
+  /// The register byte of an EMCY raised with `registerBits`.
+  uint8_t frameRegister(uint8_t registerBits) const noexcept;
   void record(uint16_t code, const uint8_t* manufacturer) noexcept;
   void publishRegister() noexcept;
   uint32_t cobId() const noexcept;

@@ -144,6 +144,10 @@ class Node {
   uint8_t nodeId() const noexcept { return nodeId_; }
   /// Node-id to use from the next reset communication on (1..127).
   void setPendingNodeId(uint8_t nodeId) noexcept { pendingNodeId_ = nodeId; }
+  uint8_t pendingNodeId() const noexcept { return pendingNodeId_; }
+  /// Bit timing to use from the next reset communication on (devices that set it by SDO).
+  void setPendingBitTiming(LssBitTiming timing) noexcept { pendingBitTiming_ = timing; }
+  LssBitTiming pendingBitTiming() const noexcept { return pendingBitTiming_; }
 
   // --- Application API ---------------------------------------------------------------------
   /// The application changed entry (index, subIndex): event-driven and synchronous acyclic
@@ -242,11 +246,13 @@ class Node {
   NoStorage noStorage_;
   ParameterStore store_;
   bool storageReady_ = false;
+  bool powerOn_ = false;
   StoreCommands storeCommands_;
   LssBridge lssBridge_;
   AutoSave autoSave_;
   LssSlave lss_;
   LssBitTiming bitTiming_;
+  LssBitTiming pendingBitTiming_;
   struct InvalidParameters {
     uint8_t groups[8] = {};
     StoreResult results[8] = {};

@@ -1,0 +1,196 @@
+#include "gefran_device.hpp"
+
+#include "angle_model.hpp"
+#include "costa/od/little_endian.hpp"
+
+namespace costa::gefran {
+namespace {
+
+constexpr uint16_t kRawValues = 0x2000;
+constexpr uint16_t kProcessData = 0x2011;
+constexpr uint16_t kResolution = 0x2100;
+constexpr uint16_t kZeroPoint = 0x2101;
+constexpr uint16_t kClockwise = 0x2102;
+constexpr uint16_t kOutputBytes = 0x2110;
+constexpr uint16_t kErrorBehaviour = 0x4000;
+constexpr uint16_t kErrorCode = 0x4001;
+constexpr uint16_t kAutoStart = 0x5000;
+constexpr uint16_t kLittleEndian = 0x5001;
+constexpr uint16_t kLssParameters = 0x5999;
+constexpr uint16_t kGenericError = 0x1000;
+constexpr uint32_t kSaveSignature = 0x65766173;
+
+/// CiA 305 bit timing table index of a bit rate in kbit/s (the manual's list), -1 if none.
+int tableIndexOf(uint32_t kbits) {
+  switch (kbits) {
+    case 1000: return 0;
+    case 800: return 1;
+    case 500: return 2;
+    case 250: return 3;
+    case 125: return 4;
+    case 50: return 6;
+    default: return -1;
+  }
+}
+
+uint32_t kbitsOf(LssBitTiming timing) {
+  constexpr uint16_t kRates[] = {1000, 800, 500, 250, 125, 0, 50, 20, 10};
+  return timing.tableSelector == 0U && timing.tableIndex < 9U ? kRates[timing.tableIndex] : 0U;
+}
+
+}  // namespace
+
+NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId) noexcept {
+  NodeSettings s;
+  s.nodeId = nodeId;
+  s.storage = storage;
+  s.profile.tpdoOnEnteringOperational = true;  // E17
+  s.profile.reportErrorRegister = false;       // E14
+  s.lss = true;
+  s.lssBitRates = (1U << 0) | (1U << 1) | (1U << 2) | (1U << 3) | (1U << 4) | (1U << 6);
+  s.storeAllGroups = groupBit(od::kGroupCommunication) | groupBit(od::kGroupApplication);  // E22
+  s.restoreAllGroups = s.storeAllGroups;
+  s.restoreAllIncludesLss = true;  // E21
+  s.storedNodeIdWins = !explicitNodeId;
+  return s;
+}
+
+GefranDevice::GefranDevice(Node& node, HallSensors& sensors) noexcept
+    : node_(node), sensors_(sensors) {
+  node.attachHook(kResolution, kZeroPoint, *this);
+  node.attachHook(kLssParameters, kLssParameters, *this);
+  node.setEvents(this);
+}
+
+uint32_t GefranDevice::value(uint16_t index, uint8_t sub) const noexcept {
+  return static_cast<uint32_t>(node_.dictionary().readUnsigned(index, sub, 0));
+}
+
+void GefranDevice::onResetApplication() noexcept { reportedFaults_ = 0; }
+
+void GefranDevice::onResetCommunication() noexcept {
+  autoStartPending_ = value(kAutoStart, 0) == 1U;
+}
+
+void GefranDevice::onStoredParametersInvalid(uint8_t group, StoreResult result) noexcept {
+  (void)group;
+  (void)result;
+  storedFaults_ |= kLssParameterChecksum;  // the only parameter checksum bit (E52)
+}
+
+void GefranDevice::updateAngles() noexcept {
+  od::ObjectDictionary& dictionary = node_.dictionary();
+  uint16_t angles[2] = {};
+  for (uint8_t chip = 1; chip <= 2U; ++chip) {
+    const uint16_t raw = sensors_.raw(chip);
+    AngleSettings settings;
+    settings.resolution = static_cast<uint16_t>(value(kResolution, chip));
+    settings.zeroPoint = static_cast<uint16_t>(value(kZeroPoint, chip));
+    settings.clockwise = value(kClockwise, chip) == 1U;
+    angles[chip - 1U] = static_cast<uint16_t>(outputAngle(raw, settings));
+    dictionary.storeUnsigned(kRawValues, chip, raw);
+    dictionary.storeUnsigned(kProcessData, chip, angles[chip - 1U]);
+  }
+  dictionary.storeUnsigned(kProcessData, 3, angles[0] | (static_cast<uint32_t>(angles[1]) << 16U));
+  uint8_t bytes[4] = {};
+  packAngles(angles[0], angles[1], value(kLittleEndian, 0) == 1U, bytes);
+  for (uint8_t i = 0; i < 4U; ++i) {
+    dictionary.storeUnsigned(kOutputBytes, static_cast<uint8_t>(i + 1U), bytes[i]);
+  }
+}
+
+void GefranDevice::updateErrors() noexcept {
+  uint8_t faults = static_cast<uint8_t>(sensors_.faults() | storedFaults_);
+  if ((faults & kMagneticField) != 0U) {
+    faults |= kChip1Error | kChip2Error;  // 0x83 (E15)
+  }
+  node_.dictionary().storeUnsigned(kErrorCode, 0, faults);
+  const uint8_t added = static_cast<uint8_t>(faults & ~reportedFaults_);
+  const uint8_t removed = static_cast<uint8_t>(reportedFaults_ & ~faults);
+  for (uint8_t bit = 0; bit < 8U; ++bit) {
+    const auto mask = static_cast<uint8_t>(1U << bit);
+    if ((added & mask) != 0U) {
+      // EMCY: 0x1000, register 0 (E14), 0x4001, 0x00, FF FF FF (manual lines 270-276).
+      const uint8_t manufacturer[5] = {faults, 0x00, 0xFF, 0xFF, 0xFF};
+      node_.raiseError(kGenericError, kErrorGeneric, manufacturer, bit);
+    } else if ((removed & mask) != 0U) {
+      node_.clearError(kGenericError, bit);
+    }
+  }
+  reportedFaults_ = faults;
+  if (added != 0U) {
+    const uint32_t behaviour = value(kErrorBehaviour, 0);
+    if (behaviour == 0U && node_.state() == NmtState::kOperational) {
+      node_.enterState(NmtState::kPreOperational);
+    } else if (behaviour == 2U) {
+      node_.enterState(NmtState::kStopped);
+    }
+  }
+}
+
+Microseconds GefranDevice::process(Microseconds now) noexcept {
+  (void)now;
+  updateAngles();
+  updateErrors();
+  if (autoStartPending_ && node_.state() == NmtState::kPreOperational) {
+    autoStartPending_ = false;
+    node_.enterState(NmtState::kOperational);  // 0x5000 = 1: automatic NMT start (E16, E17)
+  }
+  return kNever;
+}
+
+AbortCode GefranDevice::prepareRead(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                                    const ReadRequest& request) noexcept {
+  (void)request;
+  if (ref.index() == kLssParameters && ref.subIndex() == 1U) {
+    dictionary.storeUnsigned(*ref.entry, kbitsOf(node_.pendingBitTiming()));
+  } else if (ref.index() == kLssParameters && ref.subIndex() == 2U) {
+    dictionary.storeUnsigned(*ref.entry, node_.pendingNodeId());
+  }
+  return AbortCode::kNone;
+}
+
+AbortCode GefranDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                              const uint8_t* data, size_t length) noexcept {
+  const AbortCode checked = dictionary.check(*ref.entry, data, length);
+  if (checked != AbortCode::kNone) {
+    return ref.index() == kLssParameters && ref.subIndex() == 3U ? AbortCode::kCannotStore
+                                                                 : checked;
+  }
+  const auto number = static_cast<uint32_t>(loadLittleEndian(data, length < 4U ? length : 4U));
+  if (ref.index() == kResolution && fullScale(static_cast<uint16_t>(number)) == 0U) {
+    return AbortCode::kInvalidValue;  // only 1000, 100 and 22 (E26)
+  }
+  if (ref.index() == kZeroPoint &&
+      number >= fullScale(static_cast<uint16_t>(value(kResolution, ref.subIndex())))) {
+    return AbortCode::kValueTooHigh;  // beyond a turn at the present resolution (E4)
+  }
+  if (ref.index() == kLssParameters) {
+    switch (ref.subIndex()) {
+      case 1: {
+        const int index = tableIndexOf(number);
+        if (index < 0) {
+          return AbortCode::kInvalidValue;  // not one of the listed bit rates (E26)
+        }
+        node_.setPendingBitTiming(LssBitTiming{0, static_cast<uint8_t>(index)});
+        break;
+      }
+      case 2:
+        node_.setPendingNodeId(static_cast<uint8_t>(number));
+        break;
+      case 3:
+        if (number != kSaveSignature) {
+          return AbortCode::kCannotStore;  // E51
+        }
+        return node_.storeLssConfiguration(node_.pendingNodeId(), node_.pendingBitTiming()) ==
+                       LssStoreResult::kStored
+                   ? AbortCode::kNone
+                   : AbortCode::kCannotStore;
+      default:
+        break;
+    }
+  }
+  return dictionary.write(*ref.entry, data, length);
+}
+
+}  // namespace costa::gefran
