@@ -33,6 +33,9 @@ class InProcessBus : public TranscriptBus {
   size_t unread() const { return can_.count() - cursor_; }
 
  private:
+  /// Calls process() now, again while it asks for an immediate call.
+  void runProcess();
+
   port::RecordingCan can_;
   std::unique_ptr<host::DeviceTarget> target_;
   Microseconds now_ = 0;
