@@ -19,6 +19,7 @@ class ExampleTarget {
   Microseconds process(Microseconds now) noexcept;
 
   Dictionary& node() noexcept { return node_; }
+  ExampleDevice& device() noexcept { return device_; }
 
  private:
   static NodeSettings settings(uint8_t nodeId) noexcept;
