@@ -27,19 +27,19 @@ InProcessBus::InProcessBus(const std::string& device, int nodeId,
   runProcess();
 }
 
-void InProcessBus::runProcess() {
+bool InProcessBus::runProcess() {
   // A deadline of `now` asks for another call at once (a block upload queueing a sub-block
   // longer than the transmit queue); a deadline in the past, or `now` without end, is a bug.
   constexpr int kImmediateRunsAllowed = 1000;
   for (int run = 0;; ++run) {
     nextDeadline_ = target_->process(now_);
     if (nextDeadline_ > now_) {
-      return;
+      return true;
     }
     if (nextDeadline_ < now_ || run == kImmediateRunsAllowed) {
       ADD_FAILURE() << "process() asked to run again at " << nextDeadline_ << " us, not after now ("
                     << now_ << " us)";
-      return;
+      return false;
     }
   }
 }
@@ -64,7 +64,9 @@ void InProcessBus::advance(Microseconds microseconds) {
   const Microseconds end = now_ + microseconds;
   while (nextDeadline_ <= end) {
     now_ = nextDeadline_ > now_ ? nextDeadline_ : now_;
-    runProcess();
+    if (!runProcess()) {
+      break;
+    }
   }
   now_ = end;
   runProcess();

@@ -33,8 +33,9 @@ class InProcessBus : public TranscriptBus {
   size_t unread() const { return can_.count() - cursor_; }
 
  private:
-  /// Calls process() now, again while it asks for an immediate call.
-  void runProcess();
+  /// Calls process() now, again while it asks for an immediate call. False (and a test
+  /// failure) when it never stops asking, or asks for a time in the past.
+  bool runProcess();
 
   port::RecordingCan can_;
   std::unique_ptr<host::DeviceTarget> target_;

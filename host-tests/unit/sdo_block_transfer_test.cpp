@@ -132,6 +132,31 @@ INSTANTIATE_TEST_SUITE_P(All, LostUploadSegment,
                            return "Segment" + std::to_string(parameters.param.first);
                          });
 
+TEST_F(BlockTransferTest, UploadSubBlockWaitsWhileTheControllerRefuses) {
+  ASSERT_TRUE(client_.download(kScratchPad, 0, pattern(10240)).ok());
+  ASSERT_EQ(playText(R"(
+    rx 601 [8] A4 08 20 00 7F 00 00 00
+    tx 581 [8] C6 08 20 00 00 28 00 00
+  )",
+                     bus_),
+            "");
+  bus_.can().setAccepting(false);
+  ASSERT_EQ(playText("rx 601 [8] A3 00 00 00 00 00 00 00", bus_), "");
+  bus_.advance(500000);  // no busy loop (the bus would fail the test), no timeout either
+  EXPECT_EQ(bus_.unread(), 0U);
+  bus_.can().setAccepting(true);
+  bus_.node().flushTx();
+  bus_.advance(1);
+  CanFrame frame;
+  for (int sequence = 1; sequence <= 127; ++sequence) {
+    ASSERT_TRUE(bus_.receive(&frame, 0)) << "segment " << sequence;
+    EXPECT_EQ(frame.data[0], sequence);
+  }
+  EXPECT_EQ(bus_.unread(), 0U);
+  EXPECT_EQ(bus_.node().txDropped(), 0U);
+  EXPECT_EQ(playText("rx 601 [8] 80 08 20 00 00 00 00 08", bus_), "");
+}
+
 TEST_F(BlockTransferTest, SmallUploadBlockSizes) {
   const std::vector<uint8_t> data = pattern(100);
   ASSERT_TRUE(client_.download(kScratchPad, 0, data).ok());
