@@ -11,7 +11,8 @@ namespace costa {
 
 /// Extra facts about a read request: the SDO initiate-upload frame's bytes 4..7, which CiA 301
 /// reserves but some devices interpret (a channel selector, for example). All zero when the
-/// read does not come from an SDO upload.
+/// read does not come from an expedited or segmented SDO upload (a block upload uses those
+/// bytes for its block size and protocol switch threshold).
 struct ReadRequest {
   uint8_t requestData[4] = {};
 };
