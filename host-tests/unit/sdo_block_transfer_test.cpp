@@ -34,10 +34,8 @@ class BlockTransferTest : public ::testing::Test {
 
   void SetUp() override { ASSERT_EQ(playText("tx 701 [1] 00", bus_), ""); }
 
-  example::ExampleDevice& device() {
-    return dynamic_cast<host::HostedTarget<example::ExampleTarget>&>(bus_.target())
-        .composition()
-        .device();
+  example::ExampleTarget& device() {
+    return dynamic_cast<host::HostedTarget<example::ExampleTarget>&>(bus_.target()).composition();
   }
   std::vector<uint8_t> scratchPad() {
     const uint8_t* data = device().scratchPad();

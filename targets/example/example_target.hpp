@@ -19,7 +19,9 @@ class ExampleTarget {
   Microseconds process(Microseconds now) noexcept;
 
   Dictionary& node() noexcept { return node_; }
-  ExampleDevice& device() noexcept { return device_; }
+  /// The scratch pad's content (0x2008) and length.
+  const uint8_t* scratchPad() const noexcept;
+  size_t scratchPadLength() const noexcept;
 
  private:
   static NodeSettings settings(uint8_t nodeId) noexcept;
