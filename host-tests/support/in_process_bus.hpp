@@ -39,6 +39,9 @@ class InProcessBus : public TranscriptBus {
 
  private:
   void powerOn();
+  /// Calls process() now, again while it asks for an immediate call. False (and a test
+  /// failure) when it never stops asking, or asks for a time in the past.
+  bool runProcess();
 
   port::RecordingCan can_;
   std::unique_ptr<host::DeviceTarget> target_;

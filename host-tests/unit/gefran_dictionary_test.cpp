@@ -76,75 +76,75 @@ constexpr uint8_t kComm = kGroupCommunication;
 constexpr uint8_t kApp = kGroupApplication;
 
 const Expected kManual[] = {
-    number(0x1000, 0, kU32, kConst, 0),                             // 460
-    number(0x1001, 0, kU8, kRo, 0),                                 // 461, E14
-    text(0x1008, nullptr),                                          // 462
-    text(0x1009, "1.00"),                                           // 463
-    text(0x100A, "1.14"),                                           // 464
-    number(0x1010, 0, kU8, kConst, 1),                              // 465
-    number(0x1010, 1, kU32, kRw, 1),                                // 466, E19
-    number(0x1011, 0, kU8, kConst, 1),                              // 467, E18
-    number(0x1011, 1, kU32, kRw, 1),                                // 468, E19, E20
-    number(0x1014, 0, kU32, kRw, 0x80, kComm).plusNodeId(),         // 469
-    number(0x1017, 0, kU16, kRw, 0, kComm),                         // 470
-    number(0x1018, 0, kU8, kConst, 4),                              // 471
-    number(0x1018, 1, kU32, kConst, 0x93),                          // 472
-    number(0x1018, 2, kU32, kConst, 0x64),                          // 473
-    number(0x1018, 3, kU32, kConst, 1),                             // 474
-    number(0x1018, 4, kU32, kRo, 0),                                // 475, E12
-    number(0x1200, 0, kU8, kConst, 2),                              // 477
-    number(0x1200, 1, kU32, kConst, 0x600).plusNodeId(),            // 478
-    number(0x1200, 2, kU32, kConst, 0x580).plusNodeId(),            // 479
-    number(0x1800, 0, kU8, kConst, 5),                              // 480, E8
-    number(0x1800, 1, kU32, kConst, 0x180).plusNodeId(),            // 481
-    number(0x1800, 2, kU8, kRw, 254, kComm).limits(254, 255),       // 482, E10
-    number(0x1800, 3, kU16, kConst, 0),                             // 483, E7 (sub 4: E9)
-    number(0x1800, 5, kU16, kRw, 100, kComm).limits(4, 65535),      // 485, E11
-    number(0x1A00, 0, kU8, kConst, 8),                              // 487
-    number(0x1A00, 1, kU32, kConst, 0x21100108),                    // 488
-    number(0x1A00, 2, kU32, kConst, 0x21100208),                    // 489
-    number(0x1A00, 3, kU32, kConst, 0x21100308),                    // 490
-    number(0x1A00, 4, kU32, kConst, 0x21100408),                    // 491
-    number(0x1A00, 5, kU32, kConst, 0x21100508),                    // 492
-    number(0x1A00, 6, kU32, kConst, 0x21100608),                    // 493
-    number(0x1A00, 7, kU32, kConst, 0x21100708),                    // 494
-    number(0x1A00, 8, kU32, kConst, 0x40010008),                    // 495
-    number(0x2000, 0, kU8, kConst, 2),                              // 507
-    number(0x2000, 1, kU16, kRo, 0).limits(0, 16383),               // 508
-    number(0x2000, 2, kU16, kRo, 0).limits(0, 16383),               // 509
-    number(0x2001, 0, kU8, kConst, 2),                              // 511
-    number(0x2001, 1, kU8, kRw, 0, kApp),                           // 512
-    number(0x2001, 2, kU8, kRw, 0, kApp),                           // 513
-    number(0x2011, 0, kU8, kConst, 3),                              // 515
-    number(0x2011, 1, kU16, kRo, 0),                                // 516
-    number(0x2011, 2, kU16, kRo, 0),                                // 517
-    number(0x2011, 3, kU32, kRo, 0),                                // 518, E25
-    number(0x2100, 0, kU8, kConst, 2),                              // 520
-    number(0x2100, 1, kU16, kRw, 100, kApp).limits(22, 1000),       // 521, E26
-    number(0x2100, 2, kU16, kRw, 100, kApp).limits(22, 1000),       // 522, E26
-    number(0x2101, 0, kU8, kConst, 2),                              // 524
-    number(0x2101, 1, kU16, kRw, 0, kApp).limits(0, 35999),         // 525, E3, E4
-    number(0x2101, 2, kU16, kRw, 0, kApp).limits(0, 35999),         // 526, E3, E4
-    number(0x2102, 0, kU8, kConst, 2),                              // 528
-    number(0x2102, 1, kU8, kRw, 0, kApp).limits(0, 1),              // 529
-    number(0x2102, 2, kU8, kRw, 1, kApp).limits(0, 1),              // 530, E27
-    number(0x2103, 0, kU16, kRw, 0, kApp),                          // 531, E28
-    number(0x2110, 0, kU8, kConst, 7),                              // 533, E5
-    number(0x2110, 1, kU8, kRo, 0).mapped(),                        // 534
-    number(0x2110, 2, kU8, kRo, 0).mapped(),                        // 535
-    number(0x2110, 3, kU8, kRo, 0).mapped(),                        // 536, E6
-    number(0x2110, 4, kU8, kRo, 0).mapped(),                        // 537, E6
-    number(0x2110, 5, kU8, kConst, 0xFF).mapped(),                  // 353, 492, E5
-    number(0x2110, 6, kU8, kConst, 0xFF).mapped(),                  // 353, 493, E5
-    number(0x2110, 7, kU8, kConst, 0xFF).mapped(),                  // 353, 494, E5
-    number(0x4000, 0, kU8, kRw, 1, kApp),                           // 550, E29
-    number(0x4001, 0, kU8, kRo, 0).mapped(),                        // 551, E15
-    number(0x5000, 0, kU8, kRw, 1, kApp).limits(0, 1),              // 552, E16
-    number(0x5001, 0, kU8, kRw, 0, kApp).limits(0, 1),              // 553
-    number(0x5999, 0, kU8, kConst, 3),                              // 555
-    number(0x5999, 1, kU16, kRw, 250).limits(50, 1000),  // 556, E26; the LSS record (E22)
-    number(0x5999, 2, kU8, kRw, 0x7F).limits(1, 127),    // 557, E1; the LSS record
-    number(0x5999, 3, kU32, kWo, 0),                                // 558
+    number(0x1000, 0, kU32, kConst, 0),                         // 460
+    number(0x1001, 0, kU8, kRo, 0),                             // 461, E14
+    text(0x1008, nullptr),                                      // 462
+    text(0x1009, "1.00"),                                       // 463
+    text(0x100A, "1.14"),                                       // 464
+    number(0x1010, 0, kU8, kConst, 1),                          // 465
+    number(0x1010, 1, kU32, kRw, 1),                            // 466, E19
+    number(0x1011, 0, kU8, kConst, 1),                          // 467, E18
+    number(0x1011, 1, kU32, kRw, 1),                            // 468, E19, E20
+    number(0x1014, 0, kU32, kRw, 0x80, kComm).plusNodeId(),     // 469
+    number(0x1017, 0, kU16, kRw, 0, kComm),                     // 470
+    number(0x1018, 0, kU8, kConst, 4),                          // 471
+    number(0x1018, 1, kU32, kConst, 0x93),                      // 472
+    number(0x1018, 2, kU32, kConst, 0x64),                      // 473
+    number(0x1018, 3, kU32, kConst, 1),                         // 474
+    number(0x1018, 4, kU32, kRo, 0),                            // 475, E12
+    number(0x1200, 0, kU8, kConst, 2),                          // 477
+    number(0x1200, 1, kU32, kConst, 0x600).plusNodeId(),        // 478
+    number(0x1200, 2, kU32, kConst, 0x580).plusNodeId(),        // 479
+    number(0x1800, 0, kU8, kConst, 5),                          // 480, E8
+    number(0x1800, 1, kU32, kConst, 0x180).plusNodeId(),        // 481
+    number(0x1800, 2, kU8, kRw, 254, kComm).limits(254, 255),   // 482, E10
+    number(0x1800, 3, kU16, kConst, 0),                         // 483, E7 (sub 4: E9)
+    number(0x1800, 5, kU16, kRw, 100, kComm).limits(4, 65535),  // 485, E11
+    number(0x1A00, 0, kU8, kConst, 8),                          // 487
+    number(0x1A00, 1, kU32, kConst, 0x21100108),                // 488
+    number(0x1A00, 2, kU32, kConst, 0x21100208),                // 489
+    number(0x1A00, 3, kU32, kConst, 0x21100308),                // 490
+    number(0x1A00, 4, kU32, kConst, 0x21100408),                // 491
+    number(0x1A00, 5, kU32, kConst, 0x21100508),                // 492
+    number(0x1A00, 6, kU32, kConst, 0x21100608),                // 493
+    number(0x1A00, 7, kU32, kConst, 0x21100708),                // 494
+    number(0x1A00, 8, kU32, kConst, 0x40010008),                // 495
+    number(0x2000, 0, kU8, kConst, 2),                          // 507
+    number(0x2000, 1, kU16, kRo, 0).limits(0, 16383),           // 508
+    number(0x2000, 2, kU16, kRo, 0).limits(0, 16383),           // 509
+    number(0x2001, 0, kU8, kConst, 2),                          // 511
+    number(0x2001, 1, kU8, kRw, 0, kApp),                       // 512
+    number(0x2001, 2, kU8, kRw, 0, kApp),                       // 513
+    number(0x2011, 0, kU8, kConst, 3),                          // 515
+    number(0x2011, 1, kU16, kRo, 0),                            // 516
+    number(0x2011, 2, kU16, kRo, 0),                            // 517
+    number(0x2011, 3, kU32, kRo, 0),                            // 518, E25
+    number(0x2100, 0, kU8, kConst, 2),                          // 520
+    number(0x2100, 1, kU16, kRw, 100, kApp).limits(22, 1000),   // 521, E26
+    number(0x2100, 2, kU16, kRw, 100, kApp).limits(22, 1000),   // 522, E26
+    number(0x2101, 0, kU8, kConst, 2),                          // 524
+    number(0x2101, 1, kU16, kRw, 0, kApp).limits(0, 35999),     // 525, E3, E4
+    number(0x2101, 2, kU16, kRw, 0, kApp).limits(0, 35999),     // 526, E3, E4
+    number(0x2102, 0, kU8, kConst, 2),                          // 528
+    number(0x2102, 1, kU8, kRw, 0, kApp).limits(0, 1),          // 529
+    number(0x2102, 2, kU8, kRw, 1, kApp).limits(0, 1),          // 530, E27
+    number(0x2103, 0, kU16, kRw, 0, kApp),                      // 531, E28
+    number(0x2110, 0, kU8, kConst, 7),                          // 533, E5
+    number(0x2110, 1, kU8, kRo, 0).mapped(),                    // 534
+    number(0x2110, 2, kU8, kRo, 0).mapped(),                    // 535
+    number(0x2110, 3, kU8, kRo, 0).mapped(),                    // 536, E6
+    number(0x2110, 4, kU8, kRo, 0).mapped(),                    // 537, E6
+    number(0x2110, 5, kU8, kConst, 0xFF).mapped(),              // 353, 492, E5
+    number(0x2110, 6, kU8, kConst, 0xFF).mapped(),              // 353, 493, E5
+    number(0x2110, 7, kU8, kConst, 0xFF).mapped(),              // 353, 494, E5
+    number(0x4000, 0, kU8, kRw, 1, kApp),                       // 550, E29
+    number(0x4001, 0, kU8, kRo, 0).mapped(),                    // 551, E15
+    number(0x5000, 0, kU8, kRw, 1, kApp).limits(0, 1),          // 552, E16
+    number(0x5001, 0, kU8, kRw, 0, kApp).limits(0, 1),          // 553
+    number(0x5999, 0, kU8, kConst, 3),                          // 555
+    number(0x5999, 1, kU16, kRw, 250).limits(50, 1000),         // 556, E26; the LSS record (E22)
+    number(0x5999, 2, kU8, kRw, 0x7F).limits(1, 127),           // 557, E1; the LSS record
+    number(0x5999, 3, kU32, kWo, 0),                            // 558
 };
 
 struct Variant {

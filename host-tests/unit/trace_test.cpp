@@ -47,6 +47,53 @@ TEST_F(Trace, ExpeditedValuesAreShownByType) {
             "SDO abort 0x3000:00 0x06020000 (object does not exist)");
 }
 
+TEST_F(Trace, BlockDownloadSegmentsAreNumbered) {
+  EXPECT_EQ(describe("601 [8] C6 06 20 00 0C 00 00 00"),
+            "SDO block download 0x2006:00, 12 bytes, CRC");
+  EXPECT_EQ(describe("581 [8] A4 06 20 00 02 00 00 00"),
+            "SDO block download response 0x2006:00, blksize 2, CRC  Device label");
+  EXPECT_EQ(describe("601 [8] 01 48 65 6C 6C 6F 20 43"),
+            "SDO block segment 1 48 65 6C 6C 6F 20 43");
+  EXPECT_EQ(describe("601 [8] 82 6F 73 74 61 21 00 00"),
+            "SDO block segment 2 6F 73 74 61 21 00 00 (last)");
+  EXPECT_EQ(describe("581 [8] A2 02 01 00 00 00 00 00"), "SDO block download ack 2, blksize 1");
+  EXPECT_EQ(describe("601 [8] C9 75 73 00 00 00 00 00"),
+            "SDO block download end, 2 bytes unused, CRC 0x7375");
+  EXPECT_EQ(describe("581 [8] A1 00 00 00 00 00 00 00"), "SDO block download end response");
+  EXPECT_EQ(describe("601 [8] 40 08 10 00 00 00 00 00"), "SDO upload 0x1008:00");
+}
+
+TEST_F(Trace, BlockDownloadSegmentsAfterAnIncompleteAck) {
+  describe("601 [8] C4 06 20 00 00 00 00 00");
+  EXPECT_EQ(describe("601 [8] 83 61 62 63 00 00 00 00"),
+            "SDO block segment 3 61 62 63 00 00 00 00 (last)");
+  EXPECT_EQ(describe("581 [8] A2 01 03 00 00 00 00 00"), "SDO block download ack 1, blksize 3");
+  EXPECT_EQ(describe("601 [8] C1 61 62 63 00 00 00 00"),  // sequence 65, last: still a segment
+            "SDO block segment 65 61 62 63 00 00 00 00 (last)");
+  EXPECT_EQ(describe("601 [8] 80 06 20 00 00 00 00 08"),
+            "SDO abort 0x2006:00 0x08000000 (general error)");
+  EXPECT_EQ(describe("601 [8] 01 61 00 00 00 00 00 00"),  // no block transfer any more
+            "SDO download segment 61 00 00 00 00 00 00");
+}
+
+TEST_F(Trace, BlockUploadSegmentsAreNumbered) {
+  EXPECT_EQ(describe("601 [8] A4 08 10 00 7F 00 00 00"),
+            "SDO block upload 0x1008:00, blksize 127, pst 0, CRC");
+  EXPECT_EQ(describe("581 [8] C6 08 10 00 0D 00 00 00"),
+            "SDO block upload response 0x1008:00, 13 bytes, CRC  Manufacturer device name");
+  EXPECT_EQ(describe("601 [8] A3 00 00 00 00 00 00 00"), "SDO block upload start");
+  EXPECT_EQ(describe("581 [8] 01 43 6F 73 74 61 20 65"),
+            "SDO block segment 1 43 6F 73 74 61 20 65");
+  EXPECT_EQ(describe("581 [8] 82 78 61 6D 70 6C 65 00"),
+            "SDO block segment 2 78 61 6D 70 6C 65 00 (last)");
+  EXPECT_EQ(describe("601 [8] A2 02 7F 00 00 00 00 00"), "SDO block upload ack 2, blksize 127");
+  EXPECT_EQ(describe("581 [8] C5 32 17 00 00 00 00 00"),
+            "SDO block upload end, 1 byte unused, CRC 0x1732");
+  EXPECT_EQ(describe("601 [8] A1 00 00 00 00 00 00 00"), "SDO block upload end response");
+  EXPECT_EQ(describe("581 [8] 60 17 10 00 00 00 00 00"),
+            "SDO download response 0x1017:00  Producer heartbeat time");
+}
+
 TEST_F(Trace, NetworkManagementAndErrorControl) {
   EXPECT_EQ(describe("000 [2] 01 00"), "NMT start all nodes");
   EXPECT_EQ(describe("000 [2] 82 05"), "NMT reset communication node 5");

@@ -29,6 +29,11 @@ AbortCode ObjectAccess::locateForWrite(uint16_t index, uint8_t subIndex,
   return AbortCode::kNone;
 }
 
+ObjectHook& ObjectAccess::hookFor(const od::EntryRef& ref) noexcept {
+  ObjectHook* hook = hooks_.find(ref.index());
+  return hook == nullptr ? plain_ : *hook;
+}
+
 AbortCode ObjectAccess::write(const od::EntryRef& ref, const uint8_t* data,
                               size_t length) noexcept {
   // Small values are compared before and after, so that observers can skip unchanged ones.
@@ -38,14 +43,29 @@ AbortCode ObjectAccess::write(const od::EntryRef& ref, const uint8_t* data,
   if (comparable) {
     memcpy(before, current, ref.entry->size);
   }
-  ObjectHook* hook = hooks_.find(ref.index());
-  const AbortCode result = hook == nullptr ? dictionary_.write(*ref.entry, data, length)
-                                           : hook->write(dictionary_, ref, data, length);
+  const AbortCode result = hookFor(ref).write(dictionary_, ref, data, length);
   if (result == AbortCode::kNone && observer_ != nullptr) {
     const bool changed = !comparable || memcmp(before, current, ref.entry->size) != 0;
     observer_->onWritten(ref, changed);
   }
   return result;
+}
+
+AbortCode ObjectAccess::readStream(const od::EntryRef& ref, size_t offset, uint8_t* destination,
+                                   size_t capacity, size_t* produced, size_t* totalSize) noexcept {
+  *produced = 0;
+  *totalSize = 0;
+  return hookFor(ref).readStream(dictionary_, ref, offset, destination, capacity, produced,
+                                 totalSize);
+}
+
+AbortCode ObjectAccess::writeStream(const od::EntryRef& ref, size_t offset, const uint8_t* source,
+                                    size_t length, bool last, size_t indicatedSize) noexcept {
+  return hookFor(ref).writeStream(dictionary_, ref, offset, source, length, last, indicatedSize);
+}
+
+void ObjectAccess::abortWriteStream(const od::EntryRef& ref, AbortCode reason) noexcept {
+  hookFor(ref).abortWriteStream(dictionary_, ref, reason);
 }
 
 }  // namespace costa

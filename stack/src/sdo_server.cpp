@@ -2,7 +2,6 @@
 
 #include <string.h>
 
-#include "costa/cob_ids.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa {
@@ -14,11 +13,12 @@ constexpr uint8_t kCcsInitiateDownload = 1;
 constexpr uint8_t kCcsInitiateUpload = 2;
 constexpr uint8_t kCcsUploadSegment = 3;
 constexpr uint8_t kCcsAbort = 4;
+constexpr uint8_t kCcsBlockUpload = 5;
+constexpr uint8_t kCcsBlockDownload = 6;
 
 constexpr uint8_t kScsInitiateDownloadResponse = 0x60;
 constexpr uint8_t kScsDownloadSegmentResponse = 0x20;
 constexpr uint8_t kScsInitiateUploadResponse = 0x40;
-constexpr uint8_t kScsAbort = 0x80;
 
 constexpr size_t kSegmentBytes = 7;
 
@@ -36,44 +36,45 @@ size_t unspecifiedExpeditedLength(const od::SubEntry& entry, const uint8_t* data
   return length;
 }
 
-// Early verdict on an indicated segmented download size.
-AbortCode checkIndicatedSize(const od::SubEntry& entry, size_t size, size_t bufferSize) {
-  if (od::isNumeric(entry.type) || entry.type == od::DataType::kOctetString) {
-    if (size > entry.size) {
-      return AbortCode::kLengthTooHigh;
-    }
-    if (size < entry.size) {
-      return AbortCode::kLengthTooLow;
-    }
-  } else if (entry.type == od::DataType::kVisibleString && size > entry.size) {
-    return AbortCode::kLengthTooHigh;
-  }
-  return size > bufferSize ? AbortCode::kOutOfMemory : AbortCode::kNone;
-}
-
 }  // namespace
 
 SdoServer::SdoServer(ObjectAccess& access, TxQueue& tx, const DeviceProfile& profile,
                      uint8_t* buffer, size_t bufferSize, Microseconds timeout) noexcept
     : access_(access),
-      tx_(tx),
+      channel_(tx, profile.distinguishHighAndLowValues),
       profile_(profile),
-      buffer_(buffer),
-      bufferSize_(bufferSize),
+      reader_(access, buffer, bufferSize),
+      writer_(access, buffer, bufferSize),
+      blockDownload_(channel_, writer_),
+      blockUpload_(channel_, reader_),
       timeout_(timeout) {}
 
 void SdoServer::reset() noexcept {
+  endTransfer(AbortCode::kGeneral);
+}
+
+void SdoServer::endTransfer(AbortCode reason) noexcept {
+  writer_.cancel(reason);
   state_ = State::kIdle;
   deadline_ = kNever;
 }
 
 Microseconds SdoServer::nextDeadline() const noexcept {
-  return state_ == State::kIdle ? kNever : deadline_;
+  if (state_ == State::kIdle) {
+    return kNever;
+  }
+  if (state_ == State::kBlockUpload && blockUpload_.sending() && channel_.roomForBurst()) {
+    return lastCall_;
+  }
+  return deadline_;
 }
 
 void SdoServer::process(Microseconds now) noexcept {
+  lastCall_ = now;
   if (state_ != State::kIdle && now >= deadline_) {
     abortTransfer(AbortCode::kTimeout);
+  } else if (state_ == State::kBlockUpload && blockUpload_.sending() && channel_.roomForBurst()) {
+    afterBlockStep(blockUpload_.pump(), false, now);
   }
 }
 
@@ -81,10 +82,11 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
   if (frame.dlc != 8U || frame.rtr) {
     return false;
   }
+  lastCall_ = now;
   const uint8_t* request = frame.data;
   const auto ccs = static_cast<uint8_t>(request[0] >> 5U);
-  if (ccs == kCcsAbort) {
-    reset();
+  if (isClientAbort(request)) {
+    endTransfer(static_cast<AbortCode>(loadU32(request + 4)));
     return true;
   }
   switch (state_) {
@@ -93,6 +95,10 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
         initiateDownload(request, now);
       } else if (ccs == kCcsInitiateUpload) {
         initiateUpload(request, now);
+      } else if (ccs == kCcsBlockDownload) {
+        initiateBlockDownload(request, now);
+      } else if (ccs == kCcsBlockUpload) {
+        initiateBlockUpload(request, now);
       } else if (ccs == kCcsDownloadSegment || ccs == kCcsUploadSegment) {
         sendAbort(0, 0, AbortCode::kCommandSpecifier);  // no transfer to continue
       } else {
@@ -113,6 +119,8 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
         abortTransfer(AbortCode::kCommandSpecifier);
       }
       break;
+    case State::kBlockDownload:
+    case State::kBlockUpload: continueBlock(request, now); break;
   }
   return true;
 }
@@ -130,7 +138,7 @@ void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexc
   if (expedited) {
     const size_t length = sizeIndicated ? 4U - ((request[0] >> 2U) & 0x03U)
                                         : unspecifiedExpeditedLength(*ref_.entry, request + 4);
-    const AbortCode written = access_.write(ref_, request + 4, length);
+    const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
     if (written != AbortCode::kNone) {
       sendAbort(index_, subIndex_, written);
       return;
@@ -139,18 +147,14 @@ void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexc
     respond(response);
     return;
   }
-  sizeIndicated_ = sizeIndicated;
-  size_ = sizeIndicated ? loadU32(request + 4) : 0U;
-  if (sizeIndicated) {
-    const AbortCode sized = checkIndicatedSize(*ref_.entry, size_, bufferSize_);
-    if (sized != AbortCode::kNone) {
-      sendAbort(index_, subIndex_, sized);
-      return;
-    }
+  const AbortCode begun =
+      writer_.begin(ref_, sizeIndicated ? loadU32(request + 4) : kSizeNotIndicated);
+  if (begun != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, begun);
+    return;
   }
   state_ = State::kDownloadSegments;
   toggle_ = 0;
-  done_ = 0;
   deadline_ = now + timeout_;
   const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
   respond(response);
@@ -163,16 +167,11 @@ void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexce
     return;
   }
   const size_t count = kSegmentBytes - ((request[0] >> 1U) & 0x07U);
-  if (sizeIndicated_ && done_ + count > size_) {
-    abortTransfer(AbortCode::kLengthMismatch);
+  const AbortCode appended = writer_.append(request + 1, count);
+  if (appended != AbortCode::kNone) {
+    abortTransfer(appended);
     return;
   }
-  if (done_ + count > bufferSize_) {
-    abortTransfer(AbortCode::kLengthTooHigh);
-    return;
-  }
-  memcpy(buffer_ + done_, request + 1, count);
-  done_ += count;
   deadline_ = now + timeout_;
   if ((request[0] & 0x01U) != 0U) {
     finishDownload();
@@ -184,18 +183,14 @@ void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexce
 }
 
 void SdoServer::finishDownload() noexcept {
-  if (sizeIndicated_ && done_ != size_) {
-    abortTransfer(AbortCode::kLengthMismatch);
-    return;
-  }
-  const AbortCode written = access_.write(ref_, buffer_, done_);
+  const AbortCode written = writer_.finish();
   if (written != AbortCode::kNone) {
     abortTransfer(written);
     return;
   }
   const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | (toggle_ << 4U))};
   respond(response);
-  reset();
+  endTransfer(AbortCode::kNone);
 }
 
 void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcept {
@@ -208,21 +203,30 @@ void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcep
     sendAbort(index_, subIndex_, prepared);
     return;
   }
-  const od::ObjectDictionary& dictionary = access_.dictionary();
-  const size_t size = dictionary.valueSize(*ref_.entry);
+  size_t size = 0;
+  const AbortCode begun = reader_.begin(ref_, &size);
+  if (begun != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, begun);
+    return;
+  }
+  answerUpload(request, size, now);
+}
+
+// The initiate upload response, expedited or segmented, for a value the reader has begun.
+void SdoServer::answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept {
   uint8_t response[8] = {0, request[1], request[2], subIndex_};
   if (size >= 1U && size <= 4U) {
-    dictionary.read(*ref_.entry, 0, response + 4, 4);
+    const AbortCode read = reader_.read(0, response + 4, size);
+    if (read != AbortCode::kNone) {
+      sendAbort(index_, subIndex_, read);
+      return;
+    }
     response[0] =
         profile_.expeditedUpload == ExpeditedUploadFormat::kSizeIndicated
             ? static_cast<uint8_t>(kScsInitiateUploadResponse | ((4U - size) << 2U) | 0x03U)
             : static_cast<uint8_t>(kScsInitiateUploadResponse | 0x02U);
     respond(response);
     return;
-  }
-  snapshot_ = size <= bufferSize_;
-  if (snapshot_) {
-    dictionary.read(*ref_.entry, 0, buffer_, size);
   }
   size_ = size;
   done_ = 0;
@@ -245,15 +249,15 @@ void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept
   const bool last = count == remaining;
   uint8_t response[8] = {
       static_cast<uint8_t>((toggle_ << 4U) | ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U))};
-  if (snapshot_) {
-    memcpy(response + 1, buffer_ + done_, count);
-  } else {
-    access_.dictionary().read(*ref_.entry, done_, response + 1, count);
+  const AbortCode read = reader_.read(done_, response + 1, count);
+  if (read != AbortCode::kNone) {
+    abortTransfer(read);
+    return;
   }
   done_ += count;
   respond(response);
   if (last) {
-    reset();
+    endTransfer(AbortCode::kNone);
   } else {
     toggle_ ^= 1U;
     deadline_ = now + timeout_;
@@ -262,26 +266,11 @@ void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept
 
 void SdoServer::abortTransfer(AbortCode code) noexcept {
   sendAbort(index_, subIndex_, code);
-  reset();
+  endTransfer(code);
 }
 
 void SdoServer::sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept {
-  if (!profile_.distinguishHighAndLowValues &&
-      (code == AbortCode::kValueTooHigh || code == AbortCode::kValueTooLow)) {
-    code = AbortCode::kInvalidValue;
-  }
-  uint8_t response[8] = {kScsAbort, static_cast<uint8_t>(index), static_cast<uint8_t>(index >> 8U),
-                         subIndex};
-  storeLittleEndian(response + 4, static_cast<uint32_t>(code), 4);
-  respond(response);
-}
-
-void SdoServer::respond(const uint8_t (&data)[8]) noexcept {
-  CanFrame frame;
-  frame.id = cob::kSdoTxBase + nodeId_;
-  frame.dlc = 8;
-  memcpy(frame.data, data, 8);
-  tx_.push(frame);
+  channel_.sendAbort(index, subIndex, code);
 }
 
 }  // namespace costa

@@ -1,5 +1,7 @@
 #include "example_device.hpp"
 
+#include <string.h>
+
 namespace costa::example {
 namespace {
 constexpr Microseconds kSecond = 1000000;
@@ -10,12 +12,14 @@ constexpr uint8_t kSelfTest = 3;
 ExampleDevice::ExampleDevice(Node& node, uint32_t serialNumber) noexcept
     : node_(node), serialNumber_(serialNumber) {
   node.attachHook(kCommand, kCommand, *this);
+  node.attachHook(kScratchPad, kScratchPad, *this);
   node.attachHook(kOperatingMode, kOperatingMode, *this);
   node.setEvents(this);
 }
 
 void ExampleDevice::onResetApplication() noexcept {
   epoch_ = node_.now();
+  scratchPadLength_ = 0;
 }
 
 void ExampleDevice::onResetCommunication() noexcept {
@@ -47,6 +51,60 @@ AbortCode ExampleDevice::write(od::ObjectDictionary& dictionary, const od::Entry
     }
   }
   return dictionary.write(*ref.entry, data, length);
+}
+
+AbortCode ExampleDevice::readStream(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                                    size_t offset, uint8_t* destination, size_t capacity,
+                                    size_t* produced, size_t* totalSize) noexcept {
+  if (ref.index() != kScratchPad) {
+    return ObjectHook::readStream(dictionary, ref, offset, destination, capacity, produced,
+                                  totalSize);
+  }
+  const size_t available = offset < scratchPadLength_ ? scratchPadLength_ - offset : 0U;
+  *produced = capacity < available ? capacity : available;
+  *totalSize = scratchPadLength_;
+  if (*produced > 0U) {
+    memcpy(destination, scratchPad_ + offset, *produced);
+  }
+  return AbortCode::kNone;
+}
+
+AbortCode ExampleDevice::writeStream(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                                     size_t offset, const uint8_t* source, size_t length, bool last,
+                                     size_t indicatedSize) noexcept {
+  if (ref.index() != kScratchPad) {
+    return ObjectHook::writeStream(dictionary, ref, offset, source, length, last, indicatedSize);
+  }
+  if (indicatedSize != kSizeNotIndicated && indicatedSize > kScratchPadCapacity) {
+    return AbortCode::kLengthTooHigh;
+  }
+  if (offset > kScratchPadCapacity || length > kScratchPadCapacity - offset) {
+    return AbortCode::kLengthTooHigh;
+  }
+  if (offset == 0U) {
+    scratchPadLength_ = 0;  // the old content is overwritten from here on
+    receiving_ = true;
+  }
+  if (length > 0U) {
+    memcpy(scratchPad_ + offset, source, length);
+  }
+  if (last) {
+    scratchPadLength_ = offset + length;
+    receiving_ = false;
+  }
+  return AbortCode::kNone;
+}
+
+void ExampleDevice::abortWriteStream(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                                     AbortCode reason) noexcept {
+  if (ref.index() != kScratchPad) {
+    ObjectHook::abortWriteStream(dictionary, ref, reason);
+    return;
+  }
+  if (receiving_) {
+    scratchPadLength_ = 0;  // partly overwritten: nothing valid is left
+    receiving_ = false;
+  }
 }
 
 }  // namespace costa::example

@@ -4,6 +4,12 @@
 //   0x2002 Command          1 = restart the uptime count; 2 = no operation;
 //                           3 = run the self-test. The example has no sensor fitted, so the
 //                           self-test always fails and the write aborts with 0x08000000.
+//   0x2008 Scratch pad      a DOMAIN of up to 12 KiB held by the device, streamed through the
+//                           hook: a download stores the bytes and their length, an upload
+//                           returns them. A larger download aborts with 0x06070012 (at once
+//                           when its size is indicated, leaving the content). Once data flows
+//                           the old content is gone: an aborted download leaves the pad empty.
+//                           Emptied by reset application.
 //   0x2010 Operating mode   may only be changed in pre-operational; in operational or stopped
 //                           the write aborts with 0x08000022.
 #pragma once
@@ -16,7 +22,9 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
  public:
   static constexpr uint16_t kUptime = 0x2001;
   static constexpr uint16_t kCommand = 0x2002;
+  static constexpr uint16_t kScratchPad = 0x2008;
   static constexpr uint16_t kOperatingMode = 0x2010;
+  static constexpr size_t kScratchPadCapacity = 12U * 1024U;
 
   /// Attaches itself to `node` (hooks and events). Call before `node.start()`. `serialNumber`
   /// goes into 0x1018:04 (so that several example nodes can be told apart by LSS).
@@ -27,13 +35,28 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
 
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
+  AbortCode readStream(od::ObjectDictionary& dictionary, const od::EntryRef& ref, size_t offset,
+                       uint8_t* destination, size_t capacity, size_t* produced,
+                       size_t* totalSize) noexcept override;
+  AbortCode writeStream(od::ObjectDictionary& dictionary, const od::EntryRef& ref, size_t offset,
+                        const uint8_t* source, size_t length, bool last,
+                        size_t indicatedSize) noexcept override;
+  void abortWriteStream(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                        AbortCode reason) noexcept override;
   void onResetApplication() noexcept override;
   void onResetCommunication() noexcept override;
+
+  /// The scratch pad's content (0x2008).
+  const uint8_t* scratchPad() const noexcept { return scratchPad_; }
+  size_t scratchPadLength() const noexcept { return scratchPadLength_; }
 
  private:
   Node& node_;
   uint32_t serialNumber_;
   Microseconds epoch_ = 0;
+  uint8_t scratchPad_[kScratchPadCapacity] = {};
+  size_t scratchPadLength_ = 0;
+  bool receiving_ = false;  ///< A download has started overwriting the scratch pad.
 };
 
 }  // namespace costa::example

@@ -24,4 +24,12 @@ Microseconds ExampleTarget::process(Microseconds now) noexcept {
   return earliest(deviceNext, node_.process(now));
 }
 
+const uint8_t* ExampleTarget::scratchPad() const noexcept {
+  return device_.scratchPad();
+}
+
+size_t ExampleTarget::scratchPadLength() const noexcept {
+  return device_.scratchPadLength();
+}
+
 }  // namespace costa::example

@@ -23,6 +23,9 @@ class ExampleTarget {
   Microseconds process(Microseconds now) noexcept;
 
   Dictionary& node() noexcept { return node_; }
+  /// The scratch pad's content (0x2008) and length.
+  const uint8_t* scratchPad() const noexcept;
+  size_t scratchPadLength() const noexcept;
 
   /// The example's settings: LSS on, bit rates of the CiA 305 table, optional storage.
   static NodeSettings settings(uint8_t nodeId, NvStorage* storage) noexcept;

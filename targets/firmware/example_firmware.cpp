@@ -4,9 +4,13 @@
 
 costa::firmware::Mailbox costaMailbox;
 
+namespace {
+// In static storage: the device's buffers (the 12 KiB scratch pad) would crowd the stack.
+costa::firmware::DummyCan can(costaMailbox);
+costa::example::ExampleTarget target(can, 1);
+}  // namespace
+
 int main() {
-  costa::firmware::DummyCan can(costaMailbox);
-  costa::example::ExampleTarget target(can, 1);
   target.start(0);
   for (;;) {
     const costa::Microseconds now = static_cast<costa::Microseconds>(costaMailbox.ticks) * 1000U;

@@ -14,8 +14,8 @@ enum Resolution : uint16_t { kOneDegree = 1000, kTenthDegree = 100, kHundredthDe
 
 /// Output values per turn for a resolution code (360, 3600, 36000), 0 for an unknown code.
 constexpr uint32_t fullScale(uint16_t resolution) noexcept {
-  return resolution == kOneDegree        ? 360U
-         : resolution == kTenthDegree    ? 3600U
+  return resolution == kOneDegree         ? 360U
+         : resolution == kTenthDegree     ? 3600U
          : resolution == kHundredthDegree ? 36000U
                                           : 0U;
 }

@@ -66,7 +66,9 @@ uint32_t GefranDevice::value(uint16_t index, uint8_t sub) const noexcept {
   return static_cast<uint32_t>(node_.dictionary().readUnsigned(index, sub, 0));
 }
 
-void GefranDevice::onResetApplication() noexcept { reportedFaults_ = 0; }
+void GefranDevice::onResetApplication() noexcept {
+  reportedFaults_ = 0;
+}
 
 void GefranDevice::onResetCommunication() noexcept {
   autoStartPending_ = value(kAutoStart, 0) == 1U;
@@ -175,9 +177,7 @@ AbortCode GefranDevice::write(od::ObjectDictionary& dictionary, const od::EntryR
         node_.setPendingBitTiming(LssBitTiming{0, static_cast<uint8_t>(index)});
         break;
       }
-      case 2:
-        node_.setPendingNodeId(static_cast<uint8_t>(number));
-        break;
+      case 2: node_.setPendingNodeId(static_cast<uint8_t>(number)); break;
       case 3:
         if (number != kSaveSignature) {
           return AbortCode::kCannotStore;  // E51
@@ -186,8 +186,7 @@ AbortCode GefranDevice::write(od::ObjectDictionary& dictionary, const od::EntryR
                        LssStoreResult::kStored
                    ? AbortCode::kNone
                    : AbortCode::kCannotStore;
-      default:
-        break;
+      default: break;
     }
   }
   return dictionary.write(*ref.entry, data, length);

@@ -2,13 +2,13 @@
 
 #include <sstream>
 
-#include "costa/port/linux/file_storage.hpp"
 #include "angle_model.hpp"
+#include "costa/port/linux/file_storage.hpp"
 #include "example_od.hpp"
+#include "example_target.hpp"
 #include "gefran_target.hpp"
 #include "gra_od.hpp"
 #include "grn_od.hpp"
-#include "example_target.hpp"
 #include "solo_od.hpp"
 #include "solo_target.hpp"
 
@@ -112,22 +112,22 @@ std::unique_ptr<DeviceTarget> createGefran(const od::Definition& definition,
   const auto nodeId =
       static_cast<uint8_t>(options.nodeId < 0 ? gefran::kFactoryNodeId : options.nodeId);
   NvStorage* raw = storage.get();
-  auto target = std::make_unique<HostedTarget<Target>>(&names, std::move(storage), definition,
-                                                       can, nodeId, raw, options.nodeId >= 0);
+  auto target = std::make_unique<HostedTarget<Target>>(&names, std::move(storage), definition, can,
+                                                       nodeId, raw, options.nodeId >= 0);
   target->setController(&controlGefran<Target>);
   return target;
 }
 
 std::unique_ptr<DeviceTarget> createGra(CanTransmitter& can, const TargetOptions& options,
                                         std::string* error) {
-  return createGefran<gen::gra::Values, gen::gra::Capacity>(gen::gra::kDefinition,
-                                                            gen::gra::kNames, can, options, error);
+  return createGefran<gen::gra::Values, gen::gra::Capacity>(gen::gra::kDefinition, gen::gra::kNames,
+                                                            can, options, error);
 }
 
 std::unique_ptr<DeviceTarget> createGrn(CanTransmitter& can, const TargetOptions& options,
                                         std::string* error) {
-  return createGefran<gen::grn::Values, gen::grn::Capacity>(gen::grn::kDefinition,
-                                                            gen::grn::kNames, can, options, error);
+  return createGefran<gen::grn::Values, gen::grn::Capacity>(gen::grn::kDefinition, gen::grn::kNames,
+                                                            can, options, error);
 }
 
 }  // namespace

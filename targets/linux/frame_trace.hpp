@@ -31,6 +31,10 @@ class FrameTracer {
   std::string describeErrorControl(const CanFrame& frame);
   std::string describeSdoRequest(const CanFrame& frame, bool local);
   std::string describeSdoResponse(const CanFrame& frame, bool local);
+  std::string describeBlockRequest(const uint8_t* data, const std::string& entry);
+  std::string describeBlockResponse(const uint8_t* data, const std::string& entry,
+                                    const std::string& name);
+  std::string describeBlockSegment(const uint8_t* data);
   std::string describeLss(const CanFrame& frame, bool fromMaster) const;
   std::string formatValue(uint16_t index, uint8_t subIndex, const uint8_t* data, size_t length,
                           bool local) const;
@@ -45,6 +49,18 @@ class FrameTracer {
   uint16_t index_ = 0;
   uint8_t subIndex_ = 0;
   std::string collected_;
+  // Block SDO transfer being watched: in kDownloadSegments the client's frames are segments,
+  // in kUploadSegments the server's; kDownloadEnd/kUploadEnd: the segment marked last was
+  // acknowledged, the end frame comes next.
+  enum class Block : uint8_t {
+    kNone,
+    kDownloadSegments,
+    kDownloadEnd,
+    kUploadSegments,
+    kUploadEnd
+  };
+  Block block_ = Block::kNone;
+  uint8_t blockLastSequence_ = 0;  ///< Sequence number of the segment marked last; 0: none yet.
 };
 
 }  // namespace costa::host

@@ -14,6 +14,18 @@ std::string hex32(uint32_t value) {
   return buffer;
 }
 
+std::string hex16(uint16_t value) {
+  char buffer[8];
+  std::snprintf(buffer, sizeof(buffer), "0x%04X", value);
+  return buffer;
+}
+
+// The n field (bits 4..2) of a block end frame.
+std::string unusedText(uint8_t command) {
+  const unsigned unused = (command >> 2U) & 7U;
+  return std::to_string(unused) + (unused == 1U ? " byte unused" : " bytes unused");
+}
+
 std::string abortText(const uint8_t* data, const std::string& entry) {
   const uint32_t code = loadU32(data + 4);
   return "SDO abort " + entry + " " + hex32(code) + " (" + describe(static_cast<AbortCode>(code)) +
@@ -27,6 +39,9 @@ std::string FrameTracer::describeSdoRequest(const CanFrame& frame, bool local) {
     return "SDO request (malformed, ignored)";
   }
   const uint8_t* d = frame.data;
+  if (block_ == Block::kDownloadSegments && d[0] != 0x80U) {
+    return describeBlockSegment(d);
+  }
   const uint16_t index = loadU16(d + 1);
   const uint8_t sub = d[3];
   const std::string entry = entryText(index, sub);
@@ -58,9 +73,12 @@ std::string FrameTracer::describeSdoRequest(const CanFrame& frame, bool local) {
     }
     case 2: return "SDO upload " + entry;
     case 3: return "SDO upload segment request";
-    case 4: uploading_ = downloading_ = false; return abortText(d, entry);
-    case 5: return "SDO block upload request";
-    case 6: return "SDO block download request";
+    case 4:
+      uploading_ = downloading_ = false;
+      block_ = Block::kNone;
+      return abortText(d, entry);
+    case 5:
+    case 6: return describeBlockRequest(d, entry);
     default: return "SDO unknown command " + hex32(d[0]);
   }
 }
@@ -70,6 +88,9 @@ std::string FrameTracer::describeSdoResponse(const CanFrame& frame, bool local) 
     return "SDO response (malformed)";
   }
   const uint8_t* d = frame.data;
+  if (block_ == Block::kUploadSegments && d[0] != 0x80U) {
+    return describeBlockSegment(d);
+  }
   const uint16_t index = loadU16(d + 1);
   const uint8_t sub = d[3];
   const std::string entry = entryText(index, sub);
@@ -103,11 +124,87 @@ std::string FrameTracer::describeSdoResponse(const CanFrame& frame, bool local) 
              " bytes" + (name.empty() ? "" : "  " + name);
     }
     case 3: return "SDO download response " + entry + (name.empty() ? "" : "  " + name);
-    case 4: uploading_ = downloading_ = false; return abortText(d, entry);
-    case 5: return "SDO block download response";
-    case 6: return "SDO block upload response";
+    case 4:
+      uploading_ = downloading_ = false;
+      block_ = Block::kNone;
+      return abortText(d, entry);
+    case 5:
+    case 6: return describeBlockResponse(d, entry, name);
     default: return "SDO unknown response";
   }
+}
+
+std::string FrameTracer::describeBlockSegment(const uint8_t* d) {
+  const auto sequence = static_cast<uint8_t>(d[0] & 0x7FU);
+  const bool last = (d[0] & 0x80U) != 0U;
+  if (last) {
+    blockLastSequence_ = sequence;
+  }
+  return "SDO block segment " + std::to_string(sequence) + " " +
+         formatValue(0, 0, d + 1, 7, false) + (last ? " (last)" : "");
+}
+
+// Client frames: ccs 6 = block download (cs bit 0: 0 initiate, 1 end); ccs 5 = block upload
+// (cs bits 1..0: 0 initiate, 1 end response, 2 acknowledgement, 3 start).
+std::string FrameTracer::describeBlockRequest(const uint8_t* d, const std::string& entry) {
+  const bool crc = (d[0] & 0x04U) != 0U;
+  if ((d[0] >> 5U) == 6U) {
+    if ((d[0] & 0x01U) == 0U) {
+      block_ = Block::kDownloadSegments;
+      blockLastSequence_ = 0;
+      return "SDO block download " + entry +
+             ((d[0] & 0x02U) != 0U ? ", " + std::to_string(loadU32(d + 4)) + " bytes" : "") +
+             (crc ? ", CRC" : "");
+    }
+    block_ = Block::kNone;
+    return "SDO block download end, " + unusedText(d[0]) + ", CRC " + hex16(loadU16(d + 1));
+  }
+  switch (d[0] & 0x03U) {
+    case 0:
+      return "SDO block upload " + entry + ", blksize " + std::to_string(d[4]) + ", pst " +
+             std::to_string(d[5]) + (crc ? ", CRC" : "");
+    case 1: block_ = Block::kNone; return "SDO block upload end response";
+    case 2:
+      if (blockLastSequence_ != 0U && d[1] == blockLastSequence_) {
+        block_ = Block::kUploadEnd;
+      }
+      blockLastSequence_ = 0;
+      return "SDO block upload ack " + std::to_string(d[1]) + ", blksize " + std::to_string(d[2]);
+    default:
+      block_ = Block::kUploadSegments;
+      blockLastSequence_ = 0;
+      return "SDO block upload start";
+  }
+}
+
+// Server frames: scs 5 = block download (ss: 0 initiate, 1 end, 2 acknowledgement); scs 6 =
+// block upload (ss bit 0: 0 initiate, 1 end).
+std::string FrameTracer::describeBlockResponse(const uint8_t* d, const std::string& entry,
+                                               const std::string& name) {
+  const bool crc = (d[0] & 0x04U) != 0U;
+  if ((d[0] >> 5U) == 5U) {
+    switch (d[0] & 0x03U) {
+      case 0:
+        return "SDO block download response " + entry + ", blksize " + std::to_string(d[4]) +
+               (crc ? ", CRC" : "") + (name.empty() ? "" : "  " + name);
+      case 1: block_ = Block::kNone; return "SDO block download end response";
+      case 2:
+        if (blockLastSequence_ != 0U && d[1] == blockLastSequence_) {
+          block_ = Block::kDownloadEnd;
+        }
+        blockLastSequence_ = 0;
+        return "SDO block download ack " + std::to_string(d[1]) + ", blksize " +
+               std::to_string(d[2]);
+      default: return "SDO unknown response";
+    }
+  }
+  if ((d[0] & 0x01U) == 0U) {
+    return "SDO block upload response " + entry +
+           ((d[0] & 0x02U) != 0U ? ", " + std::to_string(loadU32(d + 4)) + " bytes" : "") +
+           (crc ? ", CRC" : "") + (name.empty() ? "" : "  " + name);
+  }
+  block_ = Block::kNone;
+  return "SDO block upload end, " + unusedText(d[0]) + ", CRC " + hex16(loadU16(d + 1));
 }
 
 std::string FrameTracer::describeLss(const CanFrame& frame, bool fromMaster) const {

@@ -9,8 +9,8 @@
 #include <memory>
 #include <string>
 
-#include "costa/port/linux/monotonic_clock.hpp"
 #include "control_socket.hpp"
+#include "costa/port/linux/monotonic_clock.hpp"
 #include "costa/port/linux/socketcan_port.hpp"
 #include "device_registry.hpp"
 #include "frame_text.hpp"

@@ -45,12 +45,26 @@ class ObjectAccess {
   /// Writes a located entry through its hook (or the plain dictionary).
   AbortCode write(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
 
+  /// The streaming functions of the entry's hook (ObjectHook::readStream, writeStream,
+  /// abortWriteStream), or their plain defaults when no hook covers the entry.
+  AbortCode readStream(const od::EntryRef& ref, size_t offset, uint8_t* destination,
+                       size_t capacity, size_t* produced, size_t* totalSize) noexcept;
+  AbortCode writeStream(const od::EntryRef& ref, size_t offset, const uint8_t* source,
+                        size_t length, bool last, size_t indicatedSize) noexcept;
+  void abortWriteStream(const od::EntryRef& ref, AbortCode reason) noexcept;
+
   void setObserver(WriteObserver* observer) noexcept { observer_ = observer; }
 
  private:
   WriteObserver* observer_ = nullptr;
+  /// The behaviour of an entry no hook covers.
+  class PlainHook final : public ObjectHook {};
+
+  ObjectHook& hookFor(const od::EntryRef& ref) noexcept;
+
   od::ObjectDictionary& dictionary_;
   const HookRegistry& hooks_;
+  PlainHook plain_;
 };
 
 }  // namespace costa

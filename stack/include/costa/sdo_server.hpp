@@ -1,4 +1,4 @@
-// SDO server (CiA 301 7.2.4): expedited and segmented upload and download on the default
+// SDO server (CiA 301 7.2.4): expedited, segmented and block upload and download on the default
 // SDO channel 0x600+id / 0x580+id.
 #pragma once
 
@@ -8,6 +8,11 @@
 #include "costa/device_profile.hpp"
 #include "costa/object_access.hpp"
 #include "costa/port/can_frame.hpp"
+#include "costa/sdo_block_download.hpp"
+#include "costa/sdo_block_upload.hpp"
+#include "costa/sdo_channel.hpp"
+#include "costa/sdo_value_reader.hpp"
+#include "costa/sdo_value_writer.hpp"
 #include "costa/time.hpp"
 #include "costa/tx_queue.hpp"
 
@@ -15,60 +20,78 @@ namespace costa {
 
 class SdoServer {
  public:
-  /// `buffer` holds a segmented transfer's data; its size bounds the largest value that can be
-  /// downloaded. Uploads of larger values are read piecewise from the dictionary.
+  /// `buffer` holds a transfer's value; DOMAINs and values larger than the buffer are streamed
+  /// through the entry's hook instead (ObjectHook::readStream/writeStream, sdo_streaming.hpp).
+  /// `timeout` applies to every wait for the client.
   SdoServer(ObjectAccess& access, TxQueue& tx, const DeviceProfile& profile, uint8_t* buffer,
             size_t bufferSize, Microseconds timeout) noexcept;
 
-  void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
+  void setNodeId(uint8_t nodeId) noexcept { channel_.setNodeId(nodeId); }
 
   /// Handles a frame received on 0x600+id. Frames with DLC other than 8 and RTR frames are
   /// ignored, as CiA 301 requires: returns false for them. O(log n) in the dictionary size
   /// plus the hook's cost.
   bool onRequest(const CanFrame& frame, Microseconds now) noexcept;
 
-  /// Aborts a transfer that has been silent longer than the timeout (0x05040000).
+  /// Aborts a transfer that has been silent longer than the timeout (0x05040000); queues
+  /// further segments of a block upload sub-block as the transmit queue has room.
   void process(Microseconds now) noexcept;
 
-  /// Next time process() has work, or kNever.
+  /// Next time process() has work, or kNever. While a block upload sub-block has segments left
+  /// and the transmit queue has room, that is the time of the last call: call again at once.
   Microseconds nextDeadline() const noexcept;
 
-  /// Drops any transfer in progress without a frame (NMT reset, stopped state).
+  /// Drops any transfer in progress without a frame (NMT reset, stopped state). A streamed
+  /// download is reported to its hook (abortWriteStream, kGeneral).
   void reset() noexcept;
 
   bool busy() const noexcept { return state_ != State::kIdle; }
 
  private:
-  enum class State : uint8_t { kIdle, kDownloadSegments, kUploadSegments };
+  enum class State : uint8_t {
+    kIdle,
+    kDownloadSegments,
+    kUploadSegments,
+    kBlockDownload,
+    kBlockUpload
+  };
 
   void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
   void downloadSegment(const uint8_t* request, Microseconds now) noexcept;
   void initiateUpload(const uint8_t* request, Microseconds now) noexcept;
+  void answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept;
   void uploadSegment(const uint8_t* request, Microseconds now) noexcept;
   void finishDownload() noexcept;
+  // Block transfers (sdo_server_block.cpp).
+  bool isClientAbort(const uint8_t* request) const noexcept;
+  void initiateBlockDownload(const uint8_t* request, Microseconds now) noexcept;
+  void initiateBlockUpload(const uint8_t* request, Microseconds now) noexcept;
+  void continueBlock(const uint8_t* request, Microseconds now) noexcept;
+  void afterBlockStep(AbortCode result, bool finished, Microseconds now) noexcept;
 
   void sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept;
   void abortTransfer(AbortCode code) noexcept;
-  void respond(const uint8_t (&data)[8]) noexcept;
+  void endTransfer(AbortCode reason) noexcept;
+  void respond(const uint8_t (&data)[8]) noexcept { channel_.send(data); }
 
   ObjectAccess& access_;
-  TxQueue& tx_;
+  SdoChannel channel_;
   const DeviceProfile& profile_;
-  uint8_t* buffer_;
-  size_t bufferSize_;
+  SdoValueReader reader_;
+  SdoValueWriter writer_;
+  SdoBlockDownload blockDownload_;
+  SdoBlockUpload blockUpload_;
   Microseconds timeout_;
-  uint8_t nodeId_ = 0;
 
   State state_ = State::kIdle;
   od::EntryRef ref_;
   uint16_t index_ = 0;
   uint8_t subIndex_ = 0;
   uint8_t toggle_ = 0;
-  bool sizeIndicated_ = false;
-  bool snapshot_ = false;  ///< Upload data is in buffer_ (else read from the dictionary).
-  size_t size_ = 0;        ///< Total bytes of the transfer (indicated or known).
-  size_t done_ = 0;        ///< Bytes transferred so far.
+  size_t size_ = 0;  ///< Total bytes of a segmented upload.
+  size_t done_ = 0;  ///< Bytes uploaded so far.
   Microseconds deadline_ = kNever;
+  Microseconds lastCall_ = 0;  ///< `now` of the latest call.
 };
 
 }  // namespace costa

@@ -1,0 +1,57 @@
+// The sending side of the SDO server's channel (0x580 + node-id): responses, aborts, and the
+// room left in the transmit queue for a burst of block upload segments.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "costa/cob_ids.hpp"
+#include "costa/od/abort_code.hpp"
+#include "costa/od/little_endian.hpp"
+#include "costa/port/can_frame.hpp"
+#include "costa/tx_queue.hpp"
+
+namespace costa {
+
+class SdoChannel {
+ public:
+  /// `distinguishHighAndLowValues`: DeviceProfile's choice between 0x06090031/0x06090032 and
+  /// 0x06090030 for values out of range.
+  SdoChannel(TxQueue& tx, bool distinguishHighAndLowValues) noexcept
+      : tx_(tx), distinguishHighAndLowValues_(distinguishHighAndLowValues) {}
+
+  void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
+
+  /// Queues one 8-byte response.
+  void send(const uint8_t (&data)[8]) noexcept {
+    CanFrame frame;
+    frame.id = cob::kSdoTxBase + nodeId_;
+    frame.dlc = 8;
+    memcpy(frame.data, data, 8);
+    tx_.push(frame);
+  }
+
+  /// Queues an abort frame (CiA 301 7.2.4.3.17).
+  void sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept {
+    if (!distinguishHighAndLowValues_ &&
+        (code == AbortCode::kValueTooHigh || code == AbortCode::kValueTooLow)) {
+      code = AbortCode::kInvalidValue;
+    }
+    uint8_t data[8] = {0x80, static_cast<uint8_t>(index), static_cast<uint8_t>(index >> 8U),
+                       subIndex};
+    storeLittleEndian(data + 4, static_cast<uint32_t>(code), 4);
+    send(data);
+  }
+
+  /// Whether a burst may queue another frame. A quarter of the queue stays free for the other
+  /// services (heartbeat, emergency), so that a long block upload never crowds them out.
+  bool roomForBurst() const noexcept { return tx_.size() < tx_.capacity() - tx_.capacity() / 4U; }
+
+ private:
+  TxQueue& tx_;
+  bool distinguishHighAndLowValues_;
+  uint8_t nodeId_ = 0;
+};
+
+}  // namespace costa

@@ -1,0 +1,17 @@
+// Which entries the SDO server streams through their hook instead of copying them whole.
+#pragma once
+
+#include <stddef.h>
+
+#include "costa/od/definition.hpp"
+
+namespace costa {
+
+/// DOMAINs (whose data lives with the application) and values larger than the SDO buffer are
+/// moved piecewise through ObjectHook::readStream() and writeStream(); every other value is
+/// copied whole through the buffer, so that a download is written only when complete.
+inline bool sdoStreams(const od::SubEntry& entry, size_t bufferSize) noexcept {
+  return entry.type == od::DataType::kDomain || entry.size > bufferSize;
+}
+
+}  // namespace costa

@@ -1,0 +1,129 @@
+#include "costa/sdo_block_upload.hpp"
+
+#include "costa/od/little_endian.hpp"
+
+namespace costa {
+namespace {
+
+constexpr size_t kSegmentBytes = 7;
+
+// Client frames: ccs 5 in bits 7..5, cs in bits 1..0 (bit 2 of the initiate request: cc).
+constexpr uint8_t kClientCommandMask = 0xE3;
+constexpr uint8_t kClientCrc = 0x04;
+constexpr uint8_t kEndResponse = 0xA1;       // cs 1
+constexpr uint8_t kSubBlockResponse = 0xA2;  // cs 2
+constexpr uint8_t kStartUpload = 0xA3;       // cs 3
+// Server frames: scs 6 in bits 7..5.
+constexpr uint8_t kInitiateResponse = 0xC6;  // sc 1 (CRC supported), s 1 (size), ss 0
+constexpr uint8_t kEndRequest = 0xC1;        // n in bits 4..2, ss 1
+constexpr uint8_t kLastSegment = 0x80;
+
+}  // namespace
+
+void SdoBlockUpload::start(const uint8_t* request, size_t size) noexcept {
+  crcUsed_ = (request[0] & kClientCrc) != 0U;
+  crc_.reset();
+  crcDone_ = 0;
+  size_ = size;
+  blockStart_ = 0;
+  blockSize_ = request[4];
+  planned_ = 0;
+  sent_ = 0;
+  phase_ = Phase::kWaitStart;
+  uint8_t response[8] = {kInitiateResponse, request[1], request[2], request[3]};
+  storeLittleEndian(response + 4, size, 4);
+  channel_.send(response);
+}
+
+AbortCode SdoBlockUpload::onRequest(const uint8_t* request) noexcept {
+  const auto command = static_cast<uint8_t>(request[0] & kClientCommandMask);
+  switch (phase_) {
+    case Phase::kWaitStart:
+      if (command == kStartUpload) {
+        return beginSubBlock();
+      }
+      break;
+    case Phase::kSubBlock:
+      if (command == kSubBlockResponse) {
+        return acknowledged(request[1], request[2]);
+      }
+      break;
+    case Phase::kWaitEndResponse:
+      if (command == kEndResponse) {
+        phase_ = Phase::kDone;
+        return AbortCode::kNone;
+      }
+      break;
+    case Phase::kDone: break;
+  }
+  return AbortCode::kCommandSpecifier;
+}
+
+AbortCode SdoBlockUpload::beginSubBlock() noexcept {
+  const size_t remaining = size_ - blockStart_;
+  const size_t segments =
+      remaining == 0U ? 1U
+                      : remaining / kSegmentBytes + (remaining % kSegmentBytes != 0U ? 1U : 0U);
+  planned_ = segments < blockSize_ ? static_cast<uint8_t>(segments) : blockSize_;
+  sent_ = 0;
+  phase_ = Phase::kSubBlock;
+  return pump();
+}
+
+AbortCode SdoBlockUpload::pump() noexcept {
+  while (sending() && channel_.roomForBurst()) {
+    const AbortCode sent = sendSegment(static_cast<uint8_t>(sent_ + 1U));
+    if (sent != AbortCode::kNone) {
+      return sent;
+    }
+    ++sent_;
+  }
+  return AbortCode::kNone;
+}
+
+AbortCode SdoBlockUpload::sendSegment(uint8_t sequence) noexcept {
+  const size_t offset = blockStart_ + (sequence - 1U) * kSegmentBytes;
+  const size_t remaining = size_ - offset;
+  const size_t count = remaining < kSegmentBytes ? remaining : kSegmentBytes;
+  const bool last = offset + count == size_;
+  uint8_t segment[8] = {static_cast<uint8_t>((last ? kLastSegment : 0U) | sequence)};
+  const AbortCode read = reader_.read(offset, segment + 1, count);
+  if (read != AbortCode::kNone) {
+    return read;
+  }
+  if (offset == crcDone_) {  // first time this segment is sent
+    crc_.update(segment + 1, count);
+    crcDone_ += count;
+  }
+  channel_.send(segment);
+  return AbortCode::kNone;
+}
+
+AbortCode SdoBlockUpload::acknowledged(uint8_t sequence, uint8_t nextBlockSize) noexcept {
+  if (sequence > sent_) {
+    return AbortCode::kSequenceNumber;
+  }
+  if (nextBlockSize < 1U || nextBlockSize > kMaxBlockSize) {
+    return AbortCode::kBlockSize;
+  }
+  const size_t covered = blockStart_ + planned_ * kSegmentBytes;  // end of this sub-block
+  if (sequence == planned_ && covered >= size_) {
+    sendEnd();
+    return AbortCode::kNone;
+  }
+  blockStart_ += sequence * kSegmentBytes;
+  blockSize_ = nextBlockSize;
+  return beginSubBlock();
+}
+
+void SdoBlockUpload::sendEnd() noexcept {
+  const size_t inLast = size_ == 0U ? 0U : (size_ - 1U) % kSegmentBytes + 1U;
+  const auto unused = static_cast<uint8_t>(kSegmentBytes - inLast);
+  const uint16_t crc = crcUsed_ ? crc_.value() : 0U;
+  const uint8_t request[8] = {static_cast<uint8_t>(kEndRequest | (unused << 2U)),
+                              static_cast<uint8_t>(crc), static_cast<uint8_t>(crc >> 8U)};
+  channel_.send(request);
+  phase_ = Phase::kWaitEndResponse;
+}
+
+}  // namespace costa

@@ -1,0 +1,95 @@
+// SdoServer's side of block transfers: initiation, the protocol switch threshold, and passing
+// the transfer's frames to SdoBlockDownload / SdoBlockUpload.
+#include "costa/od/little_endian.hpp"
+#include "costa/sdo_server.hpp"
+
+namespace costa {
+namespace {
+
+constexpr uint8_t kCcsAbort = 4;
+constexpr uint8_t kAbortRequest = 0x80;
+constexpr uint8_t kDownloadSubcommand = 0x01;  // cs of a block download request: 1 = end
+constexpr uint8_t kUploadSubcommand = 0x03;    // cs of a block upload request: 0 = initiate
+constexpr size_t kBlockSizeByte = 4;           // initiate block upload: blksize, then pst
+constexpr size_t kProtocolSwitchByte = 5;
+
+}  // namespace
+
+bool SdoServer::isClientAbort(const uint8_t* request) const noexcept {
+  // Inside a block download, 0x81..0x9F are last segments with sequence numbers 1..31.
+  return state_ == State::kBlockDownload ? request[0] == kAbortRequest
+                                         : (request[0] >> 5U) == kCcsAbort;
+}
+
+void SdoServer::initiateBlockDownload(const uint8_t* request, Microseconds now) noexcept {
+  if ((request[0] & kDownloadSubcommand) != 0U) {  // the end of a transfer that is not running
+    sendAbort(0, 0, AbortCode::kCommandSpecifier);
+    return;
+  }
+  index_ = loadU16(request + 1);
+  subIndex_ = request[3];
+  AbortCode started = access_.locateForWrite(index_, subIndex_, &ref_);
+  if (started == AbortCode::kNone) {
+    started = blockDownload_.start(ref_, request);
+  }
+  if (started != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, started);
+    return;
+  }
+  state_ = State::kBlockDownload;
+  deadline_ = now + timeout_;
+}
+
+void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) noexcept {
+  if ((request[0] & kUploadSubcommand) != 0U) {  // a step of a transfer that is not running
+    sendAbort(0, 0, AbortCode::kCommandSpecifier);
+    return;
+  }
+  index_ = loadU16(request + 1);
+  subIndex_ = request[3];
+  const uint8_t blockSize = request[kBlockSizeByte];
+  if (blockSize < 1U || blockSize > SdoBlockUpload::kMaxBlockSize) {
+    sendAbort(index_, subIndex_, AbortCode::kBlockSize);
+    return;
+  }
+  // Bytes 4..7 carry blksize and pst here, not request data for the hook.
+  AbortCode begun = access_.prepareRead(index_, subIndex_, ReadRequest{}, &ref_);
+  size_t size = 0;
+  if (begun == AbortCode::kNone) {
+    begun = reader_.begin(ref_, &size);
+  }
+  if (begun != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, begun);
+    return;
+  }
+  const uint8_t threshold = request[kProtocolSwitchByte];
+  if (threshold != 0U && size <= threshold) {
+    answerUpload(request, size, now);  // expedited or segmented instead
+    return;
+  }
+  blockUpload_.start(request, size);
+  state_ = State::kBlockUpload;
+  deadline_ = now + timeout_;
+}
+
+void SdoServer::continueBlock(const uint8_t* request, Microseconds now) noexcept {
+  if (state_ == State::kBlockDownload) {
+    const AbortCode result = blockDownload_.onRequest(request);
+    afterBlockStep(result, blockDownload_.finished(), now);
+  } else {
+    const AbortCode result = blockUpload_.onRequest(request);
+    afterBlockStep(result, blockUpload_.finished(), now);
+  }
+}
+
+void SdoServer::afterBlockStep(AbortCode result, bool finished, Microseconds now) noexcept {
+  if (result != AbortCode::kNone) {
+    abortTransfer(result);
+  } else if (finished) {
+    endTransfer(AbortCode::kNone);
+  } else {
+    deadline_ = now + timeout_;
+  }
+}
+
+}  // namespace costa

@@ -1,0 +1,128 @@
+#include "costa/sdo_value_writer.hpp"
+
+#include <string.h>
+
+#include "costa/sdo_streaming.hpp"
+
+namespace costa {
+namespace {
+
+// Early verdict on the indicated size of a buffered download.
+AbortCode checkIndicatedSize(const od::SubEntry& entry, size_t size, size_t bufferSize) {
+  if (od::isNumeric(entry.type) || entry.type == od::DataType::kOctetString) {
+    if (size > entry.size) {
+      return AbortCode::kLengthTooHigh;
+    }
+    if (size < entry.size) {
+      return AbortCode::kLengthTooLow;
+    }
+  } else if (entry.type == od::DataType::kVisibleString && size > entry.size) {
+    return AbortCode::kLengthTooHigh;
+  }
+  return size > bufferSize ? AbortCode::kOutOfMemory : AbortCode::kNone;
+}
+
+}  // namespace
+
+AbortCode SdoValueWriter::writeWhole(const od::EntryRef& ref, const uint8_t* data,
+                                     size_t length) noexcept {
+  if (!sdoStreams(*ref.entry, bufferSize_)) {
+    return access_.write(ref, data, length);
+  }
+  const AbortCode written = access_.writeStream(ref, 0, data, length, true, length);
+  if (written != AbortCode::kNone) {
+    access_.abortWriteStream(ref, written);
+  }
+  return written;
+}
+
+AbortCode SdoValueWriter::begin(const od::EntryRef& ref, size_t indicatedSize) noexcept {
+  ref_ = ref;
+  streamed_ = sdoStreams(*ref.entry, bufferSize_);
+  indicated_ = indicatedSize;
+  received_ = 0;
+  flushed_ = 0;
+  if (!streamed_) {
+    const AbortCode sized = indicatedSize == kSizeNotIndicated
+                                ? AbortCode::kNone
+                                : checkIndicatedSize(*ref.entry, indicatedSize, bufferSize_);
+    open_ = sized == AbortCode::kNone;
+    return sized;
+  }
+  const AbortCode started = access_.writeStream(ref, 0, buffer_, 0, false, indicatedSize);
+  if (started != AbortCode::kNone) {
+    access_.abortWriteStream(ref, started);
+    open_ = false;
+    return started;
+  }
+  open_ = true;
+  return AbortCode::kNone;
+}
+
+AbortCode SdoValueWriter::append(const uint8_t* data, size_t length) noexcept {
+  if (indicated_ != kSizeNotIndicated && received_ + length > indicated_) {
+    return AbortCode::kLengthMismatch;
+  }
+  if (!streamed_) {
+    if (received_ + length > bufferSize_) {
+      return AbortCode::kLengthTooHigh;
+    }
+    memcpy(buffer_ + received_, data, length);
+    received_ += length;
+    return AbortCode::kNone;
+  }
+  while (length > 0U) {
+    if (received_ - flushed_ == bufferSize_) {
+      const AbortCode flushed = flush(false);
+      if (flushed != AbortCode::kNone) {
+        return flushed;
+      }
+    }
+    const size_t space = bufferSize_ - (received_ - flushed_);
+    const size_t count = length < space ? length : space;
+    memcpy(buffer_ + (received_ - flushed_), data, count);
+    received_ += count;
+    data += count;
+    length -= count;
+  }
+  return AbortCode::kNone;
+}
+
+AbortCode SdoValueWriter::flush(bool last) noexcept {
+  const size_t pending = received_ - flushed_;
+  const AbortCode written = access_.writeStream(ref_, flushed_, buffer_, pending, last, indicated_);
+  if (written == AbortCode::kNone) {
+    flushed_ = received_;
+  }
+  return written;
+}
+
+AbortCode SdoValueWriter::finish() noexcept {
+  if (indicated_ != kSizeNotIndicated && received_ != indicated_) {
+    return AbortCode::kLengthMismatch;
+  }
+  const AbortCode written = streamed_ ? flush(true) : access_.write(ref_, buffer_, received_);
+  if (written == AbortCode::kNone) {
+    open_ = false;
+  }
+  return written;
+}
+
+void SdoValueWriter::cancel(AbortCode reason) noexcept {
+  if (open_ && streamed_) {
+    access_.abortWriteStream(ref_, reason);
+  }
+  open_ = false;
+}
+
+size_t SdoValueWriter::room() const noexcept {
+  if (indicated_ != kSizeNotIndicated) {
+    return received_ < indicated_ ? indicated_ - received_ : 0U;
+  }
+  if (!streamed_) {
+    return bufferSize_ - received_;
+  }
+  return SIZE_MAX;
+}
+
+}  // namespace costa
