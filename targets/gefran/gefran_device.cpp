@@ -107,20 +107,23 @@ void GefranDevice::updateErrors() noexcept {
     faults |= kChip1Error | kChip2Error;  // 0x83 (E15)
   }
   node_.dictionary().storeUnsigned(kErrorCode, 0, faults);
-  const uint8_t added = static_cast<uint8_t>(faults & ~reportedFaults_);
-  const uint8_t removed = static_cast<uint8_t>(reportedFaults_ & ~faults);
-  for (uint8_t bit = 0; bit < 8U; ++bit) {
-    const auto mask = static_cast<uint8_t>(1U << bit);
-    if ((added & mask) != 0U) {
-      // EMCY: 0x1000, register 0 (E14), 0x4001, 0x00, FF FF FF (manual lines 270-276).
-      const uint8_t manufacturer[5] = {faults, 0x00, 0xFF, 0xFF, 0xFF};
-      node_.raiseError(kGenericError, kErrorGeneric, manufacturer, bit);
-    } else if ((removed & mask) != 0U) {
-      node_.clearError(kGenericError, bit);
-    }
+  if (faults == reportedFaults_) {
+    return;
+  }
+  // One EMCY per error event: 0x1000, register 0 (E14), 0x4001, 0x00, FF FF FF (lines 270-276);
+  // the error reset (CiA 301) when the last error is gone (E45).
+  const uint8_t manufacturer[5] = {faults, 0x00, 0xFF, 0xFF, 0xFF};
+  const auto added = static_cast<uint8_t>(faults & ~reportedFaults_);
+  if (faults == 0U) {
+    node_.clearError(kGenericError);
+  } else if (reportedFaults_ == 0U) {
+    node_.raiseError(kGenericError, kErrorGeneric, manufacturer);
+  } else if (added != 0U) {
+    node_.signalError(kGenericError, kErrorGeneric, manufacturer);
   }
   reportedFaults_ = faults;
   if (added != 0U) {
+    node_.process(node_.now());  // the EMCY leaves before a change to stopped would hold it
     const uint32_t behaviour = value(kErrorBehaviour, 0);
     if (behaviour == 0U && node_.state() == NmtState::kOperational) {
       node_.enterState(NmtState::kPreOperational);

@@ -1,0 +1,98 @@
+// A GRA on vcan without a node-id: an LSS master finds it by Fastscan, gives it a node-id, and
+// the sensor then starts by itself and sends its angle TPDO on the new id. And its parameters
+// survive a restart with --storage.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+
+#include "lss_master.hpp"
+#include "socket_bus.hpp"
+#include "transcript_player.hpp"
+
+namespace costa::test {
+namespace {
+
+/// LSS master link over the test's raw socket: only LSS responses count as answers.
+class SocketLink : public LssMasterLink {
+ public:
+  explicit SocketLink(SocketBus& bus) : bus_(bus) {}
+  void send(const CanFrame& frame) override { bus_.send(frame); }
+  bool receive(CanFrame* frame) override {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(80);
+    while (std::chrono::steady_clock::now() < end) {
+      if (bus_.receive(frame, 80) && frame->id == 0x7E4) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  SocketBus& bus_;
+};
+
+TEST(GefranOnVcan, FastscanFindsAnUnconfiguredGraAndGivesItANodeId) {
+  SocketBus bus("gra", 255);
+  ASSERT_EQ(bus.error(), "");
+  EXPECT_EQ(playText("sim angle 270", bus, kSocketReceiveTimeoutMs), "");
+  SocketLink link(bus);
+  LssMaster master(link);
+  LssIdentity found;
+  ASSERT_TRUE(master.fastscan(&found)) << bus.slave().output();
+  EXPECT_EQ(found.vendorId, 0x93U);
+  EXPECT_EQ(found.productCode, 0x64U);
+  EXPECT_EQ(found.revisionNumber, 1U);
+  EXPECT_EQ(master.configureNodeId(0x21), 0);
+  master.switchGlobal(false);  // the sensor resets communication with node-id 0x21
+  EXPECT_EQ(playText(R"(
+    ignore 7E4
+    ignore 1A1                             # the cyclic TPDO beyond the two checked here
+    tx 721 [1] 00                          # boot-up on the new node-id
+    tx 1A1 [8] 0A 8C 03 84 FF FF FF 00     # automatic start: the angle TPDO (270.0 / 90.0)
+    tx 1A1 [8] 0A 8C 03 84 FF FF FF 00     # and every 100 ms
+  )",
+                     bus, kSocketReceiveTimeoutMs),
+            "");
+  EXPECT_EQ(bus.slave().stop(SIGTERM), 0) << bus.slave().output();
+}
+
+TEST(GefranOnVcan, SavedParametersSurviveARestart) {
+  char directory[] = "/tmp/costa-gra-XXXXXX";
+  const std::string path = std::string(::mkdtemp(directory)) + "/gra.nv";
+  {
+    SocketBus bus("gra", 3, {"--storage", path});
+    ASSERT_EQ(bus.error(), "");
+    EXPECT_EQ(playText(R"(
+      ignore 183
+      tx 703 [1] 00
+      rx 603 [8] 2B 00 18 05 E8 03 00 00   # event timer 1000 ms
+      tx 583 [8] 60 00 18 05 00 00 00 00
+      rx 603 [8] 2F 01 50 00 01 00 00 00   # little endian
+      tx 583 [8] 60 01 50 00 00 00 00 00
+      rx 603 [8] 23 10 10 01 73 61 76 65   # "save"
+      tx 583 [8] 60 10 10 01 00 00 00 00
+    )",
+                       bus, kSocketReceiveTimeoutMs),
+              "");
+    EXPECT_EQ(bus.slave().stop(SIGTERM), 0);
+  }
+  SocketBus bus("gra", 3, {"--storage", path});
+  ASSERT_EQ(bus.error(), "");
+  EXPECT_EQ(playText(R"(
+    ignore 183
+    tx 703 [1] 00
+    rx 603 [8] 40 00 18 05 00 00 00 00
+    tx 583 [8] 4B 00 18 05 E8 03 00 00     # kept
+    rx 603 [8] 40 01 50 00 00 00 00 00
+    tx 583 [8] 4F 01 50 00 01 00 00 00     # kept
+  )",
+                     bus, kSocketReceiveTimeoutMs),
+            "");
+  EXPECT_EQ(bus.slave().stop(SIGTERM), 0);
+}
+
+}  // namespace
+}  // namespace costa::test
