@@ -74,6 +74,37 @@ std::string verifyUploadSegmented(BenchNode& node) {
   });
 }
 
+// --- SDO block upload of the same 32 characters with CRC, block size 127: initiate, start, one
+// sub-block of 5 segments, acknowledgement, end, end response. Counted per segment. ----------
+const CanFrame kBlockUploadLabel =
+    makeFrame(0x600 + kId, {0xA4, 0x06, 0x20, 0x00, 0x7F, 0x00, 0x00, 0x00});
+const CanFrame kBlockStart = makeFrame(0x600 + kId, {0xA3, 0, 0, 0, 0, 0, 0, 0});
+const CanFrame kBlockAcknowledge = makeFrame(0x600 + kId, {0xA2, 0x05, 0x7F, 0, 0, 0, 0, 0});
+const CanFrame kBlockEndResponse = makeFrame(0x600 + kId, {0xA1, 0, 0, 0, 0, 0, 0, 0});
+
+void uploadBlock(BenchNode& node) {
+  Node& n = node.node();
+  const Microseconds now = node.now();
+  n.onFrame(kBlockUploadLabel, now);
+  n.onFrame(kBlockStart, now);
+  n.process(now);  // segments the transmit queue could not take at once
+  n.onFrame(kBlockAcknowledge, now);
+  n.onFrame(kBlockEndResponse, now);
+}
+
+std::string verifyUploadBlock(BenchNode& node) {
+  constexpr uint32_t kResponse = 0x580 + kId;
+  return node.expectFrames({
+      makeFrame(kResponse, {0xC6, 0x06, 0x20, 0x00, 0x20, 0x00, 0x00, 0x00}),  // CRC, 32 bytes
+      makeFrame(kResponse, {0x01, 0x41, 0x42, 0x43, 0x44, 0x45, 0x46, 0x47}),  // "ABCDEFG"
+      makeFrame(kResponse, {0x02, 0x48, 0x49, 0x4A, 0x4B, 0x4C, 0x4D, 0x4E}),  // "HIJKLMN"
+      makeFrame(kResponse, {0x03, 0x4F, 0x50, 0x51, 0x52, 0x53, 0x54, 0x55}),  // "OPQRSTU"
+      makeFrame(kResponse, {0x04, 0x56, 0x57, 0x58, 0x59, 0x5A, 0x30, 0x31}),  // "VWXYZ01"
+      makeFrame(kResponse, {0x85, 0x32, 0x33, 0x34, 0x35, 0x00, 0x00, 0x00}),  // "2345", last
+      makeFrame(kResponse, {0xCD, 0x07, 0xB2, 0x00, 0x00, 0x00, 0x00, 0x00}),  // 3 unused, CRC
+  });
+}
+
 // --- RPDO1 (COB-ID 0x201, type 255): 0x2000 = 10000, 0x2004:02 = -10; operational. ----------
 const CanFrame kRpdo1 = makeFrame(0x200 + kId, {0x10, 0x27, 0x00, 0x00, 0xF6});
 
@@ -179,11 +210,9 @@ const Operation kOperations[] = {
     {"sdo_segmented_upload_segment",
      "SDO segmented upload, per segment (0x2006, 32 bytes: (initiate + 5 segments) / 5)", 5,
      prepareLabel, uploadSegmented, verifyUploadSegmented},
-    // SLOT: SDO block upload (ccs 5) is not in SdoServer yet; until then the table reads "not
-    // available yet". To fill it: prepare with prepareLabel, make `run` one whole block upload
-    // of 0x2006 (initiate, start, the 5 segments of one block, block acknowledge, end), make
-    // `verify` check its exact frames, and set operationsPerRun to 5 (segments).
-    {"sdo_block_upload_segment", "SDO block upload, per segment", 5, nullptr, nullptr, nullptr},
+    {"sdo_block_upload_segment",
+     "SDO block upload, per segment (0x2006, 32 bytes, CRC: whole transfer / 5 segments)", 5,
+     prepareLabel, uploadBlock, verifyUploadBlock},
     {"rpdo_reception", "RPDO reception (RPDO1, 5 bytes, type 255)", 1, operational, receiveRpdo,
      verifyRpdo},
     {"sync_4_tpdos", "SYNC in, 4 synchronous TPDOs out", 1, prepareSynchronousTpdos, sync,
