@@ -41,7 +41,7 @@ bool LssMaster::fastscan(LssIdentity* found) {
     uint32_t id = 0;
     for (int bit = 31; bit >= 0; --bit) {
       if (!probe(id, static_cast<uint8_t>(bit), sub, sub)) {
-        id |= 1UL << static_cast<unsigned>(bit);
+        id |= uint32_t{1U} << static_cast<unsigned>(bit);
       }
     }
     const uint8_t next = static_cast<uint8_t>((sub + 1U) % 4U);

@@ -10,7 +10,13 @@ target_compile_options(costa_warnings INTERFACE
 
 add_library(costa_freestanding INTERFACE)
 target_compile_options(costa_freestanding INTERFACE
-  -ffreestanding -fno-exceptions -fno-rtti -fno-threadsafe-statics)
+  -ffreestanding -fno-exceptions -fno-threadsafe-statics)
+# The sanitizer build keeps RTTI in the core: UBSan's vptr check verifies the dynamic type of
+# every polymorphic object that host code calls, and needs the core's type information for that.
+# Every other build (host, firmware) proves that the core needs no RTTI.
+if(NOT COSTA_SANITIZE)
+  target_compile_options(costa_freestanding INTERFACE -fno-rtti)
+endif()
 target_link_libraries(costa_freestanding INTERFACE costa_warnings)
 
 if(COSTA_SANITIZE)
