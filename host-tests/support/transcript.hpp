@@ -1,5 +1,6 @@
 // Transcripts: frame exchanges written as text, replayed against a node in-process, through
-// SocketCAN against costa-slave, and (later) on the firmware build.
+// SocketCAN against costa-slave, and on the firmware build (compiled into tables by
+// host-tests/replay/transcripts_to_cpp.py, which follows this parser's rules).
 //
 //   # comment (also after a step)
 //   device example          which device the slave runs

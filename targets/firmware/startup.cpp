@@ -16,6 +16,13 @@ extern Constructor __init_array_end[];
 int main();
 
 [[noreturn]] void costa_reset_handler() {
+#if defined(__ARM_FP)
+  // Hard-float builds (Cortex-M4F): the FPU is off after reset and its first instruction would
+  // fault. CPACR (0xE000ED88) bits 20..23: full access to CP10 and CP11.
+  volatile uint32_t* const cpacr = reinterpret_cast<volatile uint32_t*>(0xE000ED88U);
+  *cpacr = *cpacr | (0xFU << 20U);
+  asm volatile("dsb\n\tisb" ::: "memory");
+#endif
   const uint32_t* source = __data_load;
   for (uint32_t* target = __data_start; target < __data_end; ++target, ++source) {
     *target = *source;

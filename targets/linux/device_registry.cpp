@@ -1,11 +1,9 @@
 #include "device_registry.hpp"
 
-#include <sstream>
-
-#include "angle_model.hpp"
 #include "costa/port/linux/file_storage.hpp"
 #include "example_od.hpp"
 #include "example_target.hpp"
+#include "gefran_control.hpp"
 #include "gefran_target.hpp"
 #include "gra_od.hpp"
 #include "grn_od.hpp"
@@ -58,44 +56,17 @@ std::unique_ptr<DeviceTarget> createSolo(CanTransmitter& can, const TargetOption
                                                           can, nodeId, raw, explicitNodeId);
 }
 
-/// Simulation commands of a GRA/GRN:
-///   raw A B          raw 14-bit readings of chip 1 and chip 2 (0..16383)
-///   angle DEG        both chips at the shaft angle DEG (degrees)
-///   fault WHAT on|off  WHAT = chip1, chip2 or magnet
+/// Simulation commands of a GRA/GRN (targets/gefran/gefran_control.hpp): raw A B, angle DEG,
+/// fault chip1|chip2|magnet on|off.
 template <typename Target>
 std::string controlGefran(Target& target, const std::string& command) {
-  std::istringstream in(command);
-  std::string verb;
-  in >> verb;
-  if (verb == "raw") {
-    long a = -1;
-    long b = -1;
-    if (!(in >> a >> b) || a < 0 || a > 16383 || b < 0 || b > 16383) {
-      return "usage: raw A B (0..16383)";
-    }
-    target.sensors().setRaw(static_cast<uint16_t>(a), static_cast<uint16_t>(b));
-  } else if (verb == "angle") {
-    double degrees = 0;
-    if (!(in >> degrees)) {
-      return "usage: angle DEGREES";
-    }
-    const uint16_t raw = gefran::rawFromDegrees(degrees);
-    target.sensors().setRaw(raw, raw);
-  } else if (verb == "fault") {
-    std::string what;
-    std::string state;
-    in >> what >> state;
-    const uint8_t bits = what == "chip1"    ? gefran::kChip1Error
-                         : what == "chip2"  ? gefran::kChip2Error
-                         : what == "magnet" ? gefran::kMagneticField
-                                            : 0;
-    if (bits == 0 || (state != "on" && state != "off")) {
-      return "usage: fault chip1|chip2|magnet on|off";
-    }
-    target.sensors().setFault(bits, state == "on");
-  } else {
-    return "unknown command '" + verb + "' (raw, angle, fault)";
+  const gefran::ParsedControl parsed = gefran::parseControl(command.c_str());
+  if (parsed.error != gefran::ControlError::kNone) {
+    std::string message(gefran::describeControlError(parsed, nullptr, 0) + 1U, '\0');
+    message.resize(gefran::describeControlError(parsed, message.data(), message.size()));
+    return message;
   }
+  gefran::applyControl(parsed.command, target.sensors());
   target.process(target.node().now());
   return "";
 }
