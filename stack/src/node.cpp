@@ -53,8 +53,10 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
   hooks_.attach(PdoEngine::kFirst, PdoEngine::kLast, pdos_);
   hooks_.attach(StoreCommands::kStoreIndex, StoreCommands::kRestoreIndex, storeCommands_);
   storeCommands_.setRestoreAllListener(&lssBridge_);
-  if (settings_.saveParametersOnWrite) {
-    access_.setObserver(&autoSave_);
+  if constexpr (features::kParameterStorage) {
+    if (settings_.saveParametersOnWrite) {
+      access_.setObserver(&autoSave_);
+    }
   }
   pdos_.bind();
 }
@@ -153,7 +155,7 @@ void Node::resetCommunication() noexcept {
   setState(NmtState::kInitialising);
   sdo_.reset();
   heartbeat_.stop();
-  if (settings_.lss && lss_.pendingNodeId() != lss_.activeNodeId()) {
+  if (features::kLss && settings_.lss && lss_.pendingNodeId() != lss_.activeNodeId()) {
     pendingNodeId_ = lss_.pendingNodeId();  // configured by LSS: applies now (CiA 305)
   }
   nodeId_ = cob::isValidNodeId(pendingNodeId_) ? pendingNodeId_ : cob::kLssUnconfigured;
@@ -164,7 +166,9 @@ void Node::resetCommunication() noexcept {
   if (events_ != nullptr) {
     events_->onResetCommunication();  // the application may adjust the communication area
   }
-  lss_.reset(identity(), nodeId_, nodeId_, bitTiming_);
+  if constexpr (features::kLss) {
+    lss_.reset(identity(), nodeId_, nodeId_, bitTiming_);
+  }
   reportInvalidParameters();
   if (nodeId_ == cob::kLssUnconfigured) {
     flushTx();  // no node-id: the node waits, silent, for LSS to give it one (CiA 305)

@@ -12,7 +12,7 @@ void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
     return;
   }
   bool used = false;
-  if (frame.id == cob::kLssFromMaster && settings_.lss) {
+  if (features::kLss && frame.id == cob::kLssFromMaster && settings_.lss) {
     used = lss_.onFrame(frame, clock_.now);
   } else if (nodeId_ == cob::kLssUnconfigured) {
     used = false;  // LSS only until the node has a node-id
@@ -29,8 +29,7 @@ void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
     const bool preOrOperational =
         state_ == NmtState::kPreOperational || state_ == NmtState::kOperational;
     if (frame.id > cob::kErrorControlBase && frame.id <= cob::kErrorControlBase + 127U) {
-      handleErrorControl(frame);
-      used = true;
+      used = handleErrorControl(frame);
     } else if (preOrOperational && sync_.accepts(frame)) {
       SyncEvent sync;
       if (sync_.onFrame(frame, clock_.now, &sync)) {
@@ -49,9 +48,12 @@ void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
   process(clock_.now);
 }
 
-void Node::handleErrorControl(const CanFrame& frame) noexcept {
+bool Node::handleErrorControl(const CanFrame& frame) noexcept {
   const auto sender = static_cast<uint8_t>(frame.id - cob::kErrorControlBase);
   if (frame.rtr) {
+    if constexpr (!features::kNodeGuarding) {
+      return false;  // a node without node guarding does not answer remote requests
+    }
     if (sender == nodeId_) {
       const NodeGuarding::Event event = guarding_.onRequest(state_, clock_.now);
       if (event == NodeGuarding::Event::kResumed) {
@@ -63,11 +65,15 @@ void Node::handleErrorControl(const CanFrame& frame) noexcept {
         }
       }
     }
-    return;
+    return true;
+  }
+  if constexpr (!features::kHeartbeatConsumer) {
+    return false;  // nobody here listens to heartbeats
   }
   if (frame.dlc == 1U && sender != nodeId_) {
     handleHeartbeatEvent(heartbeatConsumer_.onHeartbeat(sender, frame.data[0], clock_.now));
   }
+  return true;
 }
 
 void Node::handleHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept {

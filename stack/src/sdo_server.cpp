@@ -13,6 +13,7 @@ constexpr uint8_t kCcsInitiateDownload = 1;
 constexpr uint8_t kCcsInitiateUpload = 2;
 constexpr uint8_t kCcsUploadSegment = 3;
 constexpr uint8_t kCcsAbort = 4;
+constexpr uint8_t kAbortRequest = 0x80;  // byte 0 of an abort: ccs 4, nothing else
 constexpr uint8_t kCcsBlockUpload = 5;
 constexpr uint8_t kCcsBlockDownload = 6;
 
@@ -63,8 +64,10 @@ Microseconds SdoServer::nextDeadline() const noexcept {
   if (state_ == State::kIdle) {
     return kNever;
   }
-  if (state_ == State::kBlockUpload && blockUpload_.sending() && channel_.roomForBurst()) {
-    return lastCall_;
+  if constexpr (features::kSdoBlockTransfer) {
+    if (blockSegmentsReady()) {
+      return lastCall_;
+    }
   }
   return deadline_;
 }
@@ -73,9 +76,19 @@ void SdoServer::process(Microseconds now) noexcept {
   lastCall_ = now;
   if (state_ != State::kIdle && now >= deadline_) {
     abortTransfer(AbortCode::kTimeout);
-  } else if (state_ == State::kBlockUpload && blockUpload_.sending() && channel_.roomForBurst()) {
-    afterBlockStep(blockUpload_.pump(), false, now);
+    return;
   }
+  if constexpr (features::kSdoBlockTransfer) {
+    if (blockSegmentsReady()) {
+      queueBlockSegments(now);
+    }
+  }
+}
+
+bool SdoServer::isClientAbort(const uint8_t* request) const noexcept {
+  // Inside a block download, 0x81..0x9F are last segments with sequence numbers 1..31.
+  return state_ == State::kBlockDownload ? request[0] == kAbortRequest
+                                         : (request[0] >> 5U) == kCcsAbort;
 }
 
 bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
@@ -91,14 +104,20 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
   }
   switch (state_) {
     case State::kIdle:
+      if constexpr (features::kSdoBlockTransfer) {
+        if (ccs == kCcsBlockDownload) {
+          initiateBlockDownload(request, now);
+          break;
+        }
+        if (ccs == kCcsBlockUpload) {
+          initiateBlockUpload(request, now);
+          break;
+        }
+      }  // without block transfers, their requests are unknown command specifiers (below)
       if (ccs == kCcsInitiateDownload) {
         initiateDownload(request, now);
       } else if (ccs == kCcsInitiateUpload) {
         initiateUpload(request, now);
-      } else if (ccs == kCcsBlockDownload) {
-        initiateBlockDownload(request, now);
-      } else if (ccs == kCcsBlockUpload) {
-        initiateBlockUpload(request, now);
       } else if (ccs == kCcsDownloadSegment || ccs == kCcsUploadSegment) {
         sendAbort(0, 0, AbortCode::kCommandSpecifier);  // no transfer to continue
       } else {
@@ -120,7 +139,11 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
       }
       break;
     case State::kBlockDownload:
-    case State::kBlockUpload: continueBlock(request, now); break;
+    case State::kBlockUpload:
+      if constexpr (features::kSdoBlockTransfer) {
+        continueBlock(request, now);
+      }
+      break;
   }
   return true;
 }

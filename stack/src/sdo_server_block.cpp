@@ -6,8 +6,6 @@
 namespace costa {
 namespace {
 
-constexpr uint8_t kCcsAbort = 4;
-constexpr uint8_t kAbortRequest = 0x80;
 constexpr uint8_t kDownloadSubcommand = 0x01;  // cs of a block download request: 1 = end
 constexpr uint8_t kUploadSubcommand = 0x03;    // cs of a block upload request: 0 = initiate
 constexpr size_t kBlockSizeByte = 4;           // initiate block upload: blksize, then pst
@@ -15,10 +13,12 @@ constexpr size_t kProtocolSwitchByte = 5;
 
 }  // namespace
 
-bool SdoServer::isClientAbort(const uint8_t* request) const noexcept {
-  // Inside a block download, 0x81..0x9F are last segments with sequence numbers 1..31.
-  return state_ == State::kBlockDownload ? request[0] == kAbortRequest
-                                         : (request[0] >> 5U) == kCcsAbort;
+bool SdoServer::blockSegmentsReady() const noexcept {
+  return state_ == State::kBlockUpload && blockUpload_.sending() && channel_.roomForBurst();
+}
+
+void SdoServer::queueBlockSegments(Microseconds now) noexcept {
+  afterBlockStep(blockUpload_.pump(), false, now);
 }
 
 void SdoServer::initiateBlockDownload(const uint8_t* request, Microseconds now) noexcept {

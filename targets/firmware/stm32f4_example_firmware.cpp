@@ -16,6 +16,11 @@ constexpr BxCanBitTiming kTiming = bxCanBitTiming(costa::firmware::stm32f4::kApb
 static_assert(kTiming.valid(), "APB1 clock cannot produce the bit rate exactly");
 constexpr uint8_t kNodeId = 1;
 
+// In static storage, not on the stack: the device (its 12 KiB scratch pad) is larger than the
+// stack the linker script reserves. Neither constructor touches the hardware.
+costa::port::stm32::BxCanPort can(costa::port::stm32::bxCan1());
+costa::example::ExampleTarget target(can, kNodeId);
+
 [[noreturn]] void halt() {
   for (;;) {
   }
@@ -29,11 +34,9 @@ int main() {
   if (!clock.start(costa::firmware::stm32f4::kCoreClockHz)) {
     halt();
   }
-  costa::port::stm32::BxCanPort can(costa::port::stm32::bxCan1());
   if (!can.start(kTiming.btr())) {
     halt();  // no acknowledge from the controller, or the bus never went idle
   }
-  costa::example::ExampleTarget target(can, kNodeId);
   target.start(clock.nowMicroseconds());
   for (;;) {
     const costa::Microseconds now = clock.nowMicroseconds();

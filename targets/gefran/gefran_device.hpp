@@ -9,6 +9,13 @@
 
 namespace costa::gefran {
 
+static_assert(features::kLss,
+              "the GRA/GRN set node-id and bit rate by LSS (CiA 305, errata E50): "
+              "build with COSTA_FEATURE_LSS=ON");
+static_assert(features::kParameterStorage,
+              "the GRA/GRN save parameters with 0x1010 and 0x5999:03 (errata E22): build with "
+              "COSTA_FEATURE_PARAMETER_STORAGE=ON");
+
 /// Node settings of a GRA/GRN: LSS with the manual's bit rates, "save" stores PARA
 /// (communication and application groups), "load" restores PARA and LSS-PARA, event-driven
 /// TPDO sent on entering operational, 0x1001 always 0 (E14).

@@ -10,6 +10,13 @@
 
 namespace costa::solo {
 
+static_assert(
+    features::kParameterStorage,
+    "the SOLO keeps its parameters in EEPROM: build with COSTA_FEATURE_PARAMETER_STORAGE=ON");
+static_assert(
+    features::kNodeGuarding,
+    "the SOLO answers node guarding (errata A12, S5): build with COSTA_FEATURE_NODE_GUARDING=ON");
+
 class SoloTarget {
  public:
   using Dictionary = NodeInstance<gen::solo::Values, gen::solo::Capacity>;

@@ -14,8 +14,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/compiled_out.hpp"
 #include "costa/device_profile.hpp"
 #include "costa/emcy_producer.hpp"
+#include "costa/features.hpp"
 #include "costa/heartbeat_consumer.hpp"
 #include "costa/heartbeat_producer.hpp"
 #include "costa/hook_registry.hpp"
@@ -69,11 +71,12 @@ struct NodeSettings {
   Microseconds sdoTimeout = millisecondsToMicroseconds(1000);  ///< Segmented transfer timeout.
   StaticPdoMappings staticPdoMappings{};  ///< Mappings of PDOs without a mapping object.
   /// Non-volatile storage of parameters (0x1010/0x1011) and of the LSS configuration; null: none.
+  /// Without effect when parameter storage is compiled out (features::kParameterStorage).
   NvStorage* storage = nullptr;
   uint32_t storeAllGroups = kAllGroupsButLss;    ///< groups "save" to 0x1010:01 stores
   uint32_t restoreAllGroups = kAllGroupsButLss;  ///< groups "load" to 0x1011:01 restores
   bool restoreAllIncludesLss = false;  ///< 0x1011:01 also discards the stored LSS configuration
-  bool lss = false;                    ///< CiA 305 LSS slave on 0x7E5 / 0x7E4
+  bool lss = false;                    ///< CiA 305 LSS slave on 0x7E5 / 0x7E4 (features::kLss)
   uint16_t lssBitRates = 0;            ///< CiA 305 table indices the controller can switch to
   LssBitTiming bitTiming{0, 3};        ///< bit timing at power-on (CiA 305 index 3: 250 kbit/s)
   bool storedNodeIdWins = true;        ///< a stored LSS node-id replaces `nodeId` at power-on
@@ -101,6 +104,16 @@ struct NodeStatistics {
 
 class Node {
  public:
+  /// The optional services of this build: the service, or its stand-in when compiled out.
+  using NodeGuardingService = ServiceIf<features::kNodeGuarding, NodeGuarding, AbsentNodeGuarding>;
+  using HeartbeatConsumerService =
+      ServiceIf<features::kHeartbeatConsumer, HeartbeatConsumer, AbsentHeartbeatConsumer>;
+  using LssSlaveService = ServiceIf<features::kLss, LssSlave, AbsentLssSlave>;
+  using ParameterStoreService =
+      ServiceIf<features::kParameterStorage, ParameterStore, AbsentParameterStore>;
+  using StoreCommandsService =
+      ServiceIf<features::kParameterStorage, StoreCommands, AbsentStoreCommands>;
+
   static constexpr uint16_t kErrorBehaviourIndex = 0x1029;
   static constexpr uint16_t kEmcyLifeGuardOrHeartbeat = 0x8130;
   static constexpr uint16_t kEmcyRxOverrun = 0x8110;
@@ -179,12 +192,14 @@ class Node {
   const od::ObjectDictionary& dictionary() const noexcept { return dictionary_; }
   const NodeStatistics& statistics() const noexcept { return statistics_; }
   const DeviceProfile& profile() const noexcept { return settings_.profile; }
-  const HeartbeatConsumer& heartbeatConsumer() const noexcept { return heartbeatConsumer_; }
-  const LssSlave& lss() const noexcept { return lss_; }
+  const HeartbeatConsumerService& heartbeatConsumer() const noexcept { return heartbeatConsumer_; }
+  const LssSlaveService& lss() const noexcept { return lss_; }
   /// Bit timing in use (CiA 305 table selector and index).
   LssBitTiming bitTiming() const noexcept { return bitTiming_; }
   /// The parameter store when the node has storage (laid out), else null.
-  ParameterStore* parameterStore() noexcept { return storageReady_ ? &store_ : nullptr; }
+  ParameterStore* parameterStore() noexcept {
+    return storageReady_ ? parameterStoreOf(store_) : nullptr;
+  }
   /// Stores the LSS configuration (node-id, bit timing) as LSS "store configuration" does.
   LssStoreResult storeLssConfiguration(uint8_t nodeId, LssBitTiming timing) noexcept;
   const PdoEngine& pdos() const noexcept { return pdos_; }
@@ -194,7 +209,7 @@ class Node {
   void setState(NmtState state) noexcept;
   void advanceClock(Microseconds now) noexcept;
   void handleSync(const SyncEvent& sync) noexcept;
-  void handleErrorControl(const CanFrame& frame) noexcept;
+  bool handleErrorControl(const CanFrame& frame) noexcept;
   void handleHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept;
   void onCommunicationError() noexcept;
   bool emcyAllowed() const noexcept;
@@ -239,18 +254,18 @@ class Node {
   PdoContext pdoContext_;
   SdoServer sdo_;
   HeartbeatProducer heartbeat_;
-  HeartbeatConsumer heartbeatConsumer_;
-  NodeGuarding guarding_;
+  HeartbeatConsumerService heartbeatConsumer_;
+  NodeGuardingService guarding_;
   SyncService sync_;
   PdoEngine pdos_;
   NoStorage noStorage_;
-  ParameterStore store_;
+  ParameterStoreService store_;
   bool storageReady_ = false;
   bool powerOn_ = false;
-  StoreCommands storeCommands_;
+  StoreCommandsService storeCommands_;
   LssBridge lssBridge_;
   AutoSave autoSave_;
-  LssSlave lss_;
+  LssSlaveService lss_;
   LssBitTiming bitTiming_;
   LssBitTiming pendingBitTiming_;
   struct InvalidParameters {
@@ -294,7 +309,8 @@ struct NodeStorage {
                                           : Extra::kMinimumSdoBuffer;
   static constexpr size_t kRpdos = atLeastOne(DictionaryCapacity::kRpdoCount);
   static constexpr size_t kTpdos = atLeastOne(DictionaryCapacity::kTpdoCount);
-  static constexpr size_t kMonitors = atLeastOne(DictionaryCapacity::kHeartbeatConsumers);
+  static constexpr size_t kMonitors =
+      features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
 
   Values values{};
   QueuedFrame tx[Extra::kTxQueueDepth]{};

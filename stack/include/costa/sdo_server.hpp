@@ -1,11 +1,14 @@
 // SDO server (CiA 301 7.2.4): expedited, segmented and block upload and download on the default
-// SDO channel 0x600+id / 0x580+id.
+// SDO channel 0x600+id / 0x580+id. Block transfers are optional (features::kSdoBlockTransfer):
+// compiled out, their initiate requests are unknown command specifiers (0x05040001).
 #pragma once
 
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/compiled_out.hpp"
 #include "costa/device_profile.hpp"
+#include "costa/features.hpp"
 #include "costa/object_access.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/sdo_block_download.hpp"
@@ -62,8 +65,11 @@ class SdoServer {
   void answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept;
   void uploadSegment(const uint8_t* request, Microseconds now) noexcept;
   void finishDownload() noexcept;
-  // Block transfers (sdo_server_block.cpp).
   bool isClientAbort(const uint8_t* request) const noexcept;
+  // Block transfers (sdo_server_block.cpp, compiled only with features::kSdoBlockTransfer).
+  /// A block upload sub-block has segments to queue and the transmit queue has room for them.
+  bool blockSegmentsReady() const noexcept;
+  void queueBlockSegments(Microseconds now) noexcept;
   void initiateBlockDownload(const uint8_t* request, Microseconds now) noexcept;
   void initiateBlockUpload(const uint8_t* request, Microseconds now) noexcept;
   void continueBlock(const uint8_t* request, Microseconds now) noexcept;
@@ -79,8 +85,8 @@ class SdoServer {
   const DeviceProfile& profile_;
   SdoValueReader reader_;
   SdoValueWriter writer_;
-  SdoBlockDownload blockDownload_;
-  SdoBlockUpload blockUpload_;
+  ServiceIf<features::kSdoBlockTransfer, SdoBlockDownload, CompiledOut> blockDownload_;
+  ServiceIf<features::kSdoBlockTransfer, SdoBlockUpload, CompiledOut> blockUpload_;
   Microseconds timeout_;
 
   State state_ = State::kIdle;

@@ -1,0 +1,213 @@
+// What the node holds in place of a service compiled out of the build (costa/features.hpp).
+//
+// Each stand-in has the interface the node uses and does nothing: the node's code compiles
+// unchanged, the calls vanish when inlined, and the service's own sources are not in the
+// library at all. Stand-ins of services with objects hide those objects: every access answers
+// 0x06020000 (object does not exist), as a device without the service does (CiA 301).
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "costa/heartbeat_consumer.hpp"
+#include "costa/lss_slave.hpp"
+#include "costa/node_guarding.hpp"
+#include "costa/object_hook.hpp"
+#include "costa/parameter_store.hpp"
+#include "costa/store_commands.hpp"
+
+namespace costa {
+
+namespace detail {
+template <bool kCompiledIn, typename Service, typename StandIn>
+struct ServiceChoice {
+  using Type = Service;
+};
+template <typename Service, typename StandIn>
+struct ServiceChoice<false, Service, StandIn> {
+  using Type = StandIn;
+};
+}  // namespace detail
+
+/// `Service` when `kCompiledIn`, else `StandIn`.
+template <bool kCompiledIn, typename Service, typename StandIn>
+using ServiceIf = typename detail::ServiceChoice<kCompiledIn, Service, StandIn>::Type;
+
+/// A member that is not there: takes the service's constructor arguments and ignores them.
+class CompiledOut {
+ public:
+  template <typename... Ignored>
+  constexpr explicit CompiledOut(Ignored&... ignored) noexcept {
+    (static_cast<void>(ignored), ...);
+  }
+};
+
+/// The objects of a compiled-out service: they do not exist.
+class AbsentObjects : public ObjectHook {
+ public:
+  AbortCode prepareRead(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                        const ReadRequest& request) noexcept override {
+    (void)dictionary;
+    (void)ref;
+    (void)request;
+    return AbortCode::kNoObject;
+  }
+  AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
+                  size_t length) noexcept override {
+    (void)dictionary;
+    (void)ref;
+    (void)data;
+    (void)length;
+    return AbortCode::kNoObject;
+  }
+};
+
+/// Node guarding compiled out: no reply to remote requests, no life time; no 0x100C/0x100D.
+class AbsentNodeGuarding final : public AbsentObjects {
+ public:
+  AbsentNodeGuarding(od::ObjectDictionary& dictionary, TxQueue& tx,
+                     const NodeClock& clock) noexcept {
+    (void)dictionary;
+    (void)tx;
+    (void)clock;
+  }
+  void reset(uint8_t nodeId, uint8_t toggleStart) noexcept {
+    (void)nodeId;
+    (void)toggleStart;
+  }
+  NodeGuarding::Event onRequest(NmtState state, Microseconds now) noexcept {
+    (void)state;
+    (void)now;
+    return NodeGuarding::Event::kNone;
+  }
+  NodeGuarding::Event process(Microseconds now) noexcept {
+    (void)now;
+    return NodeGuarding::Event::kNone;
+  }
+  Microseconds nextDeadline() const noexcept { return kNever; }
+};
+
+/// Heartbeat consumer compiled out: other nodes' heartbeats are not monitored; no 0x1016.
+class AbsentHeartbeatConsumer final : public AbsentObjects {
+ public:
+  AbsentHeartbeatConsumer(od::ObjectDictionary& dictionary, HeartbeatMonitor* monitors,
+                          size_t capacity, const NodeClock& clock) noexcept {
+    (void)dictionary;
+    (void)monitors;
+    (void)capacity;
+    (void)clock;
+  }
+  void configure(bool reset) noexcept { (void)reset; }
+  HeartbeatConsumer::Event onHeartbeat(uint8_t nodeId, uint8_t state, Microseconds now) noexcept {
+    (void)nodeId;
+    (void)state;
+    (void)now;
+    return HeartbeatConsumer::Event{};
+  }
+  HeartbeatConsumer::Event process(Microseconds now) noexcept {
+    (void)now;
+    return HeartbeatConsumer::Event{};
+  }
+  Microseconds nextDeadline() const noexcept { return kNever; }
+  const HeartbeatMonitor* monitor(uint8_t subIndex) const noexcept {
+    (void)subIndex;
+    return nullptr;
+  }
+};
+
+/// LSS compiled out: nothing on 0x7E5 is answered; the node-id and bit timing are the node's.
+class AbsentLssSlave {
+ public:
+  AbsentLssSlave(TxQueue& tx, LssSlaveHost& host) noexcept {
+    (void)tx;
+    (void)host;
+  }
+  void reset(const LssIdentity& identity, uint8_t activeNodeId, uint8_t pendingNodeId,
+             LssBitTiming bitTiming) noexcept {
+    (void)identity;
+    (void)activeNodeId;
+    (void)pendingNodeId;
+    (void)bitTiming;
+  }
+  bool onFrame(const CanFrame& frame, Microseconds now) noexcept {
+    (void)frame;
+    (void)now;
+    return false;
+  }
+  void process(Microseconds now) noexcept { (void)now; }
+  Microseconds nextDeadline() const noexcept { return kNever; }
+  bool transmissionSuspended() const noexcept { return false; }
+  uint8_t activeNodeId() const noexcept { return cob::kLssUnconfigured; }
+  uint8_t pendingNodeId() const noexcept { return cob::kLssUnconfigured; }
+};
+
+/// Parameter storage compiled out: a store that is never laid out, so nothing is ever loaded
+/// or saved.
+class AbsentParameterStore {
+ public:
+  AbsentParameterStore(od::ObjectDictionary& dictionary, NvStorage& storage) noexcept {
+    (void)dictionary;
+    (void)storage;
+  }
+  bool reserveRecord(uint8_t recordId, size_t maxLength) noexcept {
+    (void)recordId;
+    (void)maxLength;
+    return false;
+  }
+  bool layOut() noexcept { return false; }
+  bool hasGroup(uint8_t group) const noexcept {
+    (void)group;
+    return false;
+  }
+  StoreResult save(uint8_t group) noexcept {
+    (void)group;
+    return StoreResult::kNotLaidOut;
+  }
+  StoreResult load(uint8_t group) noexcept {
+    (void)group;
+    return StoreResult::kNotLaidOut;
+  }
+  StoreResult saveRecord(uint8_t recordId, const uint8_t* data, size_t length) noexcept {
+    (void)recordId;
+    (void)data;
+    (void)length;
+    return StoreResult::kNotLaidOut;
+  }
+  StoreResult loadRecord(uint8_t recordId, uint8_t* buffer, size_t capacity,
+                         size_t* length) noexcept {
+    (void)recordId;
+    (void)buffer;
+    (void)capacity;
+    *length = 0;
+    return StoreResult::kNotLaidOut;
+  }
+  StoreResult invalidateRecord(uint8_t recordId) noexcept {
+    (void)recordId;
+    return StoreResult::kNotLaidOut;
+  }
+};
+
+/// The parameter store behind a node's ParameterStore member: null when compiled out.
+inline ParameterStore* parameterStoreOf(ParameterStore& store) noexcept {
+  return &store;
+}
+inline ParameterStore* parameterStoreOf(AbsentParameterStore& store) noexcept {
+  (void)store;
+  return nullptr;
+}
+
+/// 0x1010/0x1011 with parameter storage compiled out: they do not exist.
+class AbsentStoreCommands final : public AbsentObjects {
+ public:
+  AbsentStoreCommands(AbsentParameterStore* store, uint32_t saveAllGroups,
+                      uint32_t restoreAllGroups) noexcept {
+    (void)store;
+    (void)saveAllGroups;
+    (void)restoreAllGroups;
+  }
+  void setRestoreAllListener(StoreCommands::RestoreAllListener* listener) noexcept {
+    (void)listener;
+  }
+};
+
+}  // namespace costa
