@@ -58,12 +58,13 @@ TEST_F(Gra, FactoryNodeIdAutomaticStartAndCyclicTpdo) {
     silence
     wait 1
     tx 1FF [8] 00 00 00 00 FF FF FF 00
-    rx 77F [0] RTR
-    tx 77F [1] 05                          # operational
+    rx 77F [0] RTR                         # no node guarding (E48): ignored
+    silence
     sim angle 270
     wait 100
     tx 1FF [8] 0A 8C 03 84 FF FF FF 00
   )");
+  EXPECT_EQ(bus_.node().state(), NmtState::kOperational);
 }
 
 TEST_F(Gra, AMagneticFieldFaultIsOneEventAndStopsTheNodeWhenAskedTo) {
@@ -76,8 +77,9 @@ TEST_F(Gra, AMagneticFieldFaultIsOneEventAndStopsTheNodeWhenAskedTo) {
     tx 5FF [8] 4F 01 40 00 00 00 00 00
     sim fault magnet on
     tx 0FF [8] 00 10 00 83 00 FF FF FF     # one EMCY for the event, 0x4001 = 0x83 (E15)
-    rx 77F [0] RTR
-    tx 77F [1] 04                          # stopped
+  )");
+  EXPECT_EQ(bus_.node().state(), NmtState::kStopped);
+  EXPECT_TRANSCRIPT(R"(
     wait 500
     silence                                # no TPDO, no EMCY while stopped
     sim fault magnet off
@@ -109,9 +111,8 @@ TEST_F(Gra, ASecondFaultIsANewEventAndClearingAllResets) {
     wait 100
     tx 0FF [8] 00 00 00 00 00 00 00 00
     tx 1FF [8] 00 00 00 00 FF FF FF 00
-    rx 77F [0] RTR
-    tx 77F [1] 05                          # 0x4000 = 1 (factory): no state change
   )");
+  EXPECT_EQ(bus_.node().state(), NmtState::kOperational);  // 0x4000 = 1 (factory): no change
 }
 
 TEST_F(Gra, ResolutionAndZeroPointChecks) {

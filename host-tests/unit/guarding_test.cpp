@@ -130,5 +130,31 @@ TEST_F(GuardingToggleStartsAtOne, FirstReplyHasTheToggleBitSet) {
   )");
 }
 
+class HeartbeatOnlyDevice : public ExampleNodeTest {
+ protected:
+  static NodeSettings settings() {
+    NodeSettings settings;
+    settings.profile.nodeGuarding = false;
+    return settings;
+  }
+  HeartbeatOnlyDevice() : ExampleNodeTest(settings()) {}
+};
+
+TEST_F(HeartbeatOnlyDevice, IgnoresGuardingRequestsAndCountsThem) {
+  const uint32_t ignoredBefore = bus_.node().statistics().framesIgnored;
+  EXPECT_TRANSCRIPT(R"(
+    rx 701 [0] RTR
+    silence
+    rx 000 [2] 01 01
+    rx 701 [0] RTR
+    silence
+    rx 601 [8] 2B 17 10 00 64 00 00 00   # its heartbeat works as ever
+    tx 581 [8] 60 17 10 00 00 00 00 00
+    wait 100
+    tx 701 [1] 05
+  )");
+  EXPECT_EQ(bus_.node().statistics().framesIgnored, ignoredBefore + 2U);
+}
+
 }  // namespace
 }  // namespace costa::test

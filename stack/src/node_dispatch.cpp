@@ -54,6 +54,9 @@ bool Node::handleErrorControl(const CanFrame& frame) noexcept {
     if constexpr (!features::kNodeGuarding) {
       return false;  // a node without node guarding does not answer remote requests
     }
+    if (!settings_.profile.nodeGuarding) {
+      return false;  // a device with heartbeat only does not either
+    }
     if (sender == nodeId_) {
       const NodeGuarding::Event event = guarding_.onRequest(state_, clock_.now);
       if (event == NodeGuarding::Event::kResumed) {

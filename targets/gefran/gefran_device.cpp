@@ -46,6 +46,7 @@ NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId) n
   s.storage = storage;
   s.profile.tpdoOnEnteringOperational = true;  // E17
   s.profile.reportErrorRegister = false;       // E14
+  s.profile.nodeGuarding = false;              // E48: heartbeat only
   s.lss = true;
   s.lssBitRates = (1U << 0) | (1U << 1) | (1U << 2) | (1U << 3) | (1U << 4) | (1U << 6);
   s.storeAllGroups = groupBit(od::kGroupCommunication) | groupBit(od::kGroupApplication);  // E22

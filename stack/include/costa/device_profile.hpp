@@ -68,6 +68,9 @@ struct DeviceProfile {
   EmcyLayout emcyLayout = EmcyLayout::kCia301;
   /// Toggle bit of the first node-guarding reply after a reset communication (CiA 301: 0).
   uint8_t guardToggleStart = 0;
+  /// The device answers node guarding (a remote request on 0x700 + node-id, CiA 301 7.2.8.3.2.1).
+  /// false: a device with heartbeat only; such remote requests are ignored (and counted).
+  bool nodeGuarding = true;
   /// Event-driven TPDOs (254/255) are sent once when the node enters OPERATIONAL. CiA 301 does
   /// not ask for it (events and the event timer trigger them), so the default is off.
   bool tpdoOnEnteringOperational = false;
