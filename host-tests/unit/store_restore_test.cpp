@@ -29,6 +29,7 @@ class StoreRestore : public ::testing::Test {
   void powerOn(NodeEvents* events = nullptr) {
     bus_.reset();
     NodeSettings settings = example::ExampleTarget::settings(1, &storage_);
+    settings.storageSlotAlignment = alignment_;
     auto factory = exampleWith(settings);
     bus_ = std::make_unique<InProcessBus>([&](CanTransmitter& can) {
       auto target = factory(can);
@@ -45,6 +46,7 @@ class StoreRestore : public ::testing::Test {
   }
 
   port::MemoryStorageOf<16384> storage_;
+  size_t alignment_ = 1;
   std::unique_ptr<InProcessBus> bus_;
 };
 
@@ -165,6 +167,31 @@ TEST_F(StoreRestore, ADamagedImageGivesDefaultsAndAReportedError) {
   EXPECT_EQ(value(0x2000, 0), 1000U);
   EXPECT_GE(events.count, 1);
   EXPECT_EQ(events.lastResult, StoreResult::kCorrupt);
+}
+
+TEST_F(StoreRestore, SlotsFollowTheConfiguredFlashPageAlignment) {
+  alignment_ = 256;
+  powerOn();
+  const ParameterStore* store = bus_->node().parameterStore();
+  ASSERT_NE(store, nullptr);
+  EXPECT_EQ(store->requiredSize() % 256U, 0U);
+  EXPECT_TRANSCRIPT(std::string(kChangeValues) + R"(
+    rx 601 [8] 23 10 10 01 73 61 76 65
+    tx 581 [8] 60 10 10 01 00 00 00 00
+  )");
+  // Every image ("CSTP" first) starts on a 256-byte page; nothing else does.
+  size_t images = 0;
+  for (size_t offset = 0; offset + 4 <= storage_.size(); ++offset) {
+    const uint8_t* at = storage_.bytes() + offset;
+    if (at[0] == 0x43 && at[1] == 0x53 && at[2] == 0x54 && at[3] == 0x50) {
+      EXPECT_EQ(offset % 256U, 0U) << "image at " << offset;
+      ++images;
+    }
+  }
+  EXPECT_GE(images, 2U);  // communication and application
+  powerOn();
+  EXPECT_EQ(value(0x1005, 0), 0x90U);
+  EXPECT_EQ(value(0x2000, 0), 20000U);
 }
 
 TEST(StoreWithoutStorage, CapabilitiesAreZeroAndSavesAbort) {

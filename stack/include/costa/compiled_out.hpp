@@ -145,9 +145,11 @@ class AbsentLssSlave {
 /// or saved.
 class AbsentParameterStore {
  public:
-  AbsentParameterStore(od::ObjectDictionary& dictionary, NvStorage& storage) noexcept {
+  AbsentParameterStore(od::ObjectDictionary& dictionary, NvStorage& storage,
+                       size_t slotAlignment) noexcept {
     (void)dictionary;
     (void)storage;
+    (void)slotAlignment;
   }
   bool reserveRecord(uint8_t recordId, size_t maxLength) noexcept {
     (void)recordId;

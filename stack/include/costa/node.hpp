@@ -73,6 +73,9 @@ struct NodeSettings {
   /// Non-volatile storage of parameters (0x1010/0x1011) and of the LSS configuration; null: none.
   /// Without effect when parameter storage is compiled out (features::kParameterStorage).
   NvStorage* storage = nullptr;
+  /// Every stored slot starts at and spans a multiple of this many bytes: the erase page of a
+  /// flash part, so that erasing one slot never touches another (docs/storage.md); 1: none.
+  size_t storageSlotAlignment = 1;
   uint32_t storeAllGroups = kAllGroupsButLss;    ///< groups "save" to 0x1010:01 stores
   uint32_t restoreAllGroups = kAllGroupsButLss;  ///< groups "load" to 0x1011:01 restores
   bool restoreAllIncludesLss = false;  ///< 0x1011:01 also discards the stored LSS configuration
