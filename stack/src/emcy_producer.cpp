@@ -109,7 +109,7 @@ void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
     return;
   }
   const auto capacity = static_cast<uint8_t>(history->subCount - 1U);
-  uint8_t count = static_cast<uint8_t>(dictionary_.readUnsigned(kErrorHistoryIndex, 0, 0));
+  auto count = static_cast<uint8_t>(dictionary_.readUnsigned(kErrorHistoryIndex, 0, 0));
   if (count < capacity) {
     ++count;
   }

@@ -4,6 +4,14 @@
 #include "costa/node.hpp"
 
 namespace costa {
+namespace {
+
+// The node-id an error control frame (0x701..0x77F) comes from or is addressed to.
+uint8_t errorControlNodeId(const CanFrame& frame) noexcept {
+  return static_cast<uint8_t>(frame.id - cob::kErrorControlBase);
+}
+
+}  // namespace
 
 void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
   advanceClock(now);
@@ -49,7 +57,6 @@ void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
 }
 
 bool Node::handleErrorControl(const CanFrame& frame) noexcept {
-  const auto sender = static_cast<uint8_t>(frame.id - cob::kErrorControlBase);
   if (frame.rtr) {
     if constexpr (!features::kNodeGuarding) {
       return false;  // a node without node guarding does not answer remote requests
@@ -57,7 +64,7 @@ bool Node::handleErrorControl(const CanFrame& frame) noexcept {
     if (!settings_.profile.nodeGuarding) {
       return false;  // a device with heartbeat only does not either
     }
-    if (sender == nodeId_) {
+    if (errorControlNodeId(frame) == nodeId_) {
       const NodeGuarding::Event event = guarding_.onRequest(state_, clock_.now);
       if (event == NodeGuarding::Event::kResumed) {
         if (settings_.profile.emcyForErrorControl) {
@@ -73,8 +80,9 @@ bool Node::handleErrorControl(const CanFrame& frame) noexcept {
   if constexpr (!features::kHeartbeatConsumer) {
     return false;  // nobody here listens to heartbeats
   }
-  if (frame.dlc == 1U && sender != nodeId_) {
-    handleHeartbeatEvent(heartbeatConsumer_.onHeartbeat(sender, frame.data[0], clock_.now));
+  const uint8_t producer = errorControlNodeId(frame);
+  if (frame.dlc == 1U && producer != nodeId_) {
+    handleHeartbeatEvent(heartbeatConsumer_.onHeartbeat(producer, frame.data[0], clock_.now));
   }
   return true;
 }

@@ -31,7 +31,10 @@ AbortCode ObjectAccess::locateForWrite(uint16_t index, uint8_t subIndex,
 
 ObjectHook& ObjectAccess::hookFor(const od::EntryRef& ref) noexcept {
   ObjectHook* hook = hooks_.find(ref.index());
-  return hook == nullptr ? plain_ : *hook;
+  if (hook == nullptr) {
+    return plain_;
+  }
+  return *hook;
 }
 
 AbortCode ObjectAccess::write(const od::EntryRef& ref, const uint8_t* data,

@@ -29,7 +29,7 @@ size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdo
                          uint16_t communicationIndex, uint32_t* values) noexcept {
   const auto mappingIndex = static_cast<uint16_t>(communicationIndex + 0x200U);
   if (dictionary.findObject(mappingIndex) != nullptr) {
-    size_t count = static_cast<size_t>(dictionary.readUnsigned(mappingIndex, 0, 0));
+    auto count = static_cast<size_t>(dictionary.readUnsigned(mappingIndex, 0, 0));
     if (count > PdoMap::kMaxEntries) {
       count = PdoMap::kMaxEntries;
     }
@@ -42,8 +42,10 @@ size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdo
   for (size_t i = 0; i < fixed.count; ++i) {
     const StaticPdoMapping& mapping = fixed.mappings[i];
     if (mapping.communicationIndex == communicationIndex) {
-      const size_t count =
-          mapping.count > PdoMap::kMaxEntries ? PdoMap::kMaxEntries : mapping.count;
+      size_t count = mapping.count;
+      if (count > PdoMap::kMaxEntries) {
+        count = PdoMap::kMaxEntries;
+      }
       for (size_t e = 0; e < count; ++e) {
         values[e] = mapping.entries[e];
       }

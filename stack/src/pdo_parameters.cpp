@@ -3,31 +3,38 @@
 #include "costa/pdo_engine.hpp"
 
 namespace costa {
+namespace {
+
+// Sub-index 1, the COB-ID.
+AbortCode checkCobIdWrite(const DeviceProfile& profile, bool receive, bool currentlyValid,
+                          uint32_t currentCanId, const uint8_t* data, size_t length) noexcept {
+  if (length != 4U) {
+    return AbortCode::kNone;  // the dictionary reports the length error
+  }
+  const PdoCobId cob = decodePdoCobId(loadU32(data), profile.pdoCobIdPolarity);
+  if (cob.extended || cob.reservedBits) {
+    return AbortCode::kInvalidValue;  // 29-bit CAN-IDs are not supported
+  }
+  if (currentlyValid && cob.valid && cob.canId != currentCanId) {
+    return AbortCode::kInvalidValue;  // invalidate before changing the CAN-ID
+  }
+  if (cob.valid) {
+    const CanIdRange& range = receive ? profile.rpdoCanIds : profile.tpdoCanIds;
+    if (range.restricts() ? !range.contains(cob.canId) : isRestrictedCanId(cob.canId)) {
+      return AbortCode::kInvalidValue;
+    }
+  }
+  return AbortCode::kNone;
+}
+
+}  // namespace
 
 AbortCode PdoEngine::checkCommunicationWrite(bool receive, bool currentlyValid,
                                              uint32_t currentCanId, uint8_t subIndex,
                                              const uint8_t* data, size_t length) const noexcept {
   const DeviceProfile& profile = context_.profile;
   switch (subIndex) {
-    case 1: {
-      if (length != 4U) {
-        return AbortCode::kNone;  // the dictionary reports the length error
-      }
-      const PdoCobId cob = decodePdoCobId(loadU32(data), profile.pdoCobIdPolarity);
-      if (cob.extended || cob.reservedBits) {
-        return AbortCode::kInvalidValue;  // 29-bit CAN-IDs are not supported
-      }
-      if (currentlyValid && cob.valid && cob.canId != currentCanId) {
-        return AbortCode::kInvalidValue;  // invalidate before changing the CAN-ID
-      }
-      if (cob.valid) {
-        const CanIdRange& range = receive ? profile.rpdoCanIds : profile.tpdoCanIds;
-        if (range.restricts() ? !range.contains(cob.canId) : isRestrictedCanId(cob.canId)) {
-          return AbortCode::kInvalidValue;
-        }
-      }
-      return AbortCode::kNone;
-    }
+    case 1: return checkCobIdWrite(profile, receive, currentlyValid, currentCanId, data, length);
     case 2: {
       if (length < 1U) {
         return AbortCode::kNone;

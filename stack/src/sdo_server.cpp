@@ -103,27 +103,7 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
     return true;
   }
   switch (state_) {
-    case State::kIdle:
-      if constexpr (features::kSdoBlockTransfer) {
-        if (ccs == kCcsBlockDownload) {
-          initiateBlockDownload(request, now);
-          break;
-        }
-        if (ccs == kCcsBlockUpload) {
-          initiateBlockUpload(request, now);
-          break;
-        }
-      }  // without block transfers, their requests are unknown command specifiers (below)
-      if (ccs == kCcsInitiateDownload) {
-        initiateDownload(request, now);
-      } else if (ccs == kCcsInitiateUpload) {
-        initiateUpload(request, now);
-      } else if (ccs == kCcsDownloadSegment || ccs == kCcsUploadSegment) {
-        sendAbort(0, 0, AbortCode::kCommandSpecifier);  // no transfer to continue
-      } else {
-        sendAbort(loadU16(request + 1), request[3], AbortCode::kCommandSpecifier);
-      }
-      break;
+    case State::kIdle: initiate(request, ccs, now); break;
     case State::kDownloadSegments:
       if (ccs == kCcsDownloadSegment) {
         downloadSegment(request, now);
@@ -146,6 +126,28 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
       break;
   }
   return true;
+}
+
+void SdoServer::initiate(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept {
+  if constexpr (features::kSdoBlockTransfer) {
+    if (ccs == kCcsBlockDownload) {
+      initiateBlockDownload(request, now);
+      return;
+    }
+    if (ccs == kCcsBlockUpload) {
+      initiateBlockUpload(request, now);
+      return;
+    }
+  }  // without block transfers, their requests are unknown command specifiers (below)
+  if (ccs == kCcsInitiateDownload) {
+    initiateDownload(request, now);
+  } else if (ccs == kCcsInitiateUpload) {
+    initiateUpload(request, now);
+  } else if (ccs == kCcsDownloadSegment || ccs == kCcsUploadSegment) {
+    sendAbort(0, 0, AbortCode::kCommandSpecifier);  // no transfer to continue
+  } else {
+    sendAbort(loadU16(request + 1), request[3], AbortCode::kCommandSpecifier);
+  }
 }
 
 void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexcept {
@@ -269,9 +271,9 @@ void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept
   }
   const size_t remaining = size_ - done_;
   const size_t count = remaining < kSegmentBytes ? remaining : kSegmentBytes;
-  const bool last = count == remaining;
-  uint8_t response[8] = {
-      static_cast<uint8_t>((toggle_ << 4U) | ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U))};
+  const bool last = remaining <= kSegmentBytes;
+  uint8_t response[8] = {static_cast<uint8_t>((static_cast<size_t>(toggle_) << 4U) |
+                                              ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U))};
   const AbortCode read = reader_.read(done_, response + 1, count);
   if (read != AbortCode::kNone) {
     abortTransfer(read);

@@ -130,7 +130,10 @@ void TpdoChannel::send(PdoContext& context, const uint8_t* data, Microseconds no
                        Microseconds expiry) noexcept {
   CanFrame frame;
   frame.id = canId_;
-  const size_t bytes = map_.bytes() < sizeof(frame.data) ? map_.bytes() : sizeof(frame.data);
+  size_t bytes = map_.bytes();
+  if (bytes > sizeof(frame.data)) {
+    bytes = sizeof(frame.data);
+  }
   frame.dlc = static_cast<uint8_t>(bytes);
   for (size_t i = 0; i < bytes; ++i) {
     frame.data[i] = data[i];

@@ -6,11 +6,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <system_error>
+
 namespace costa::port {
 namespace {
 
 std::string describe(const std::string& what, const std::string& path) {
-  return what + " " + path + ": " + strerror(errno);
+  const int code = errno;
+  return what + " " + path + ": " + std::system_category().message(code);
 }
 
 /// Closes a descriptor on every path out of a scope.

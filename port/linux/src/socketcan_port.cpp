@@ -10,6 +10,8 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <system_error>
+
 namespace costa::port {
 
 SocketCanPort::~SocketCanPort() {
@@ -32,7 +34,7 @@ bool SocketCanPort::open(const std::string& interfaceName, std::string* error) {
   const int fd = ::socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
   if (fd < 0) {
     const int code = errno;
-    *error = std::string("cannot open a SocketCAN socket: ") + strerror(code);
+    *error = "cannot open a SocketCAN socket: " + std::system_category().message(code);
     if (code == EAFNOSUPPORT) {
       *error += " (this kernel has no SocketCAN; see README: run inside the vcan VM)";
     }
@@ -49,8 +51,11 @@ bool SocketCanPort::open(const std::string& interfaceName, std::string* error) {
   sockaddr_can address{};
   address.can_family = AF_CAN;
   address.can_ifindex = static_cast<int>(index);
+  // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): the socket API takes sockaddr*
   if (::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) != 0) {
-    *error = "cannot bind to CAN interface " + interfaceName + ": " + strerror(errno);
+    const int code = errno;
+    *error = "cannot bind to CAN interface " + interfaceName + ": " +
+             std::system_category().message(code);
     ::close(fd);
     return false;
   }

@@ -91,11 +91,10 @@ class AbsentNodeGuarding final : public AbsentObjects {
 class AbsentHeartbeatConsumer final : public AbsentObjects {
  public:
   AbsentHeartbeatConsumer(od::ObjectDictionary& dictionary, HeartbeatMonitor* monitors,
-                          size_t capacity, const NodeClock& clock) noexcept {
+                          size_t capacity) noexcept {
     (void)dictionary;
     (void)monitors;
     (void)capacity;
-    (void)clock;
   }
   void configure(bool reset) noexcept { (void)reset; }
   HeartbeatConsumer::Event onHeartbeat(uint8_t nodeId, uint8_t state, Microseconds now) noexcept {
@@ -175,6 +174,7 @@ class AbsentParameterStore {
     (void)length;
     return StoreResult::kNotLaidOut;
   }
+  // NOLINTNEXTLINE(readability-non-const-parameter): the signature of ParameterStore::loadRecord
   StoreResult loadRecord(uint8_t recordId, uint8_t* buffer, size_t capacity,
                          size_t* length) noexcept {
     (void)recordId;

@@ -95,6 +95,8 @@ class LssSlaveHost {
   ~LssSlaveHost() = default;
   LssSlaveHost(const LssSlaveHost&) = default;
   LssSlaveHost& operator=(const LssSlaveHost&) = default;
+  LssSlaveHost(LssSlaveHost&&) = default;
+  LssSlaveHost& operator=(LssSlaveHost&&) = default;
 };
 
 /// The slave side of every CiA 305 service. Services by LSS state (CiA 305 table "LSS services
@@ -129,6 +131,7 @@ class LssSlave {
   LssSlave(TxQueue& tx, LssSlaveHost& host) noexcept;
   LssSlave(const LssSlave&) = delete;
   LssSlave& operator=(const LssSlave&) = delete;
+  ~LssSlave() = default;
 
   /// Power-on and every NMT reset communication: LSS waiting state, this identity, these
   /// node-ids (1..127, or 0xFF for none) and `bitTiming` as the running (and pending) bit

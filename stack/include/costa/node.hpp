@@ -128,6 +128,7 @@ class Node {
        const NodeSettings& settings) noexcept;
   Node(const Node&) = delete;
   Node& operator=(const Node&) = delete;
+  ~Node() = default;
 
   void setEvents(NodeEvents* events) noexcept { events_ = events; }
 

@@ -56,6 +56,8 @@ class NodeEvents {
   ~NodeEvents() = default;
   NodeEvents(const NodeEvents&) = default;
   NodeEvents& operator=(const NodeEvents&) = default;
+  NodeEvents(NodeEvents&&) = default;
+  NodeEvents& operator=(NodeEvents&&) = default;
 };
 
 }  // namespace costa

@@ -25,6 +25,8 @@ class WriteObserver {
   ~WriteObserver() = default;
   WriteObserver(const WriteObserver&) = default;
   WriteObserver& operator=(const WriteObserver&) = default;
+  WriteObserver(WriteObserver&&) = default;
+  WriteObserver& operator=(WriteObserver&&) = default;
 };
 
 class ObjectAccess {

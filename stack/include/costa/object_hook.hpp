@@ -101,6 +101,8 @@ class ObjectHook {
   ~ObjectHook() = default;
   ObjectHook(const ObjectHook&) = default;
   ObjectHook& operator=(const ObjectHook&) = default;
+  ObjectHook(ObjectHook&&) = default;
+  ObjectHook& operator=(ObjectHook&&) = default;
 };
 
 }  // namespace costa

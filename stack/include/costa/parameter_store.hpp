@@ -49,6 +49,7 @@ class ParameterStore {
                  size_t slotAlignment = 1) noexcept;
   ParameterStore(const ParameterStore&) = delete;
   ParameterStore& operator=(const ParameterStore&) = delete;
+  ~ParameterStore() = default;
 
   /// Reserves a region for up to `maxLength` bytes of raw data under `recordId` (data that is
   /// not in the dictionary, such as the LSS node-id and bit timing). Call before layOut(): a

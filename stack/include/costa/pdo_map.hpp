@@ -55,7 +55,7 @@ class PdoMap {
  private:
   struct Slot {
     od::EntryRef ref;  ///< invalid for a dummy entry
-    uint8_t bytes;
+    uint8_t bytes = 0;
   };
   Slot slots_[kMaxEntries] = {};
   size_t count_ = 0;

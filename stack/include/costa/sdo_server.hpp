@@ -59,6 +59,8 @@ class SdoServer {
     kBlockUpload
   };
 
+  /// A request while no transfer runs: starts one, or aborts.
+  void initiate(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
   void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
   void downloadSegment(const uint8_t* request, Microseconds now) noexcept;
   void initiateUpload(const uint8_t* request, Microseconds now) noexcept;

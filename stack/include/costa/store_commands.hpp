@@ -34,6 +34,8 @@ class StoreCommands : public ObjectHook {
     ~RestoreAllListener() = default;
     RestoreAllListener(const RestoreAllListener&) = default;
     RestoreAllListener& operator=(const RestoreAllListener&) = default;
+    RestoreAllListener(RestoreAllListener&&) = default;
+    RestoreAllListener& operator=(RestoreAllListener&&) = default;
   };
 
   /// `store` may be null (no storage: every capability reads 0).

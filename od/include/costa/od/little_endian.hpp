@@ -30,8 +30,11 @@ inline uint32_t loadU32(const uint8_t* source) noexcept {
   return static_cast<uint32_t>(loadLittleEndian(source, 4));
 }
 
-/// Sign-extends the low `length` bytes of `raw`. `length` in 1..8.
+/// Sign-extends the low `length` bytes of `raw`. `length` in 1..8 (0 gives 0).
 inline int64_t signExtend(uint64_t raw, size_t length) noexcept {
+  if (length == 0U) {
+    return 0;
+  }
   if (length >= 8U) {
     return static_cast<int64_t>(raw);
   }

@@ -12,6 +12,9 @@ namespace costa {
 /// to `Node::onFrame()`.
 class CanTransmitter {
  public:
+  CanTransmitter(const CanTransmitter&) = delete;
+  CanTransmitter& operator=(const CanTransmitter&) = delete;
+
   /// Queues `frame` for transmission.
   /// Returns false, without side effects, when the controller has no free transmit slot right
   /// now; the stack keeps the frame in its own bounded queue and offers it again later.
@@ -26,8 +29,6 @@ class CanTransmitter {
  protected:
   CanTransmitter() = default;
   ~CanTransmitter() = default;
-  CanTransmitter(const CanTransmitter&) = delete;
-  CanTransmitter& operator=(const CanTransmitter&) = delete;
 };
 
 }  // namespace costa

@@ -9,6 +9,9 @@ namespace costa {
 /// Microseconds since an arbitrary epoch; never goes backwards.
 class MonotonicClock {
  public:
+  MonotonicClock(const MonotonicClock&) = delete;
+  MonotonicClock& operator=(const MonotonicClock&) = delete;
+
   /// Current time in microseconds. Cost: O(1). Safe to call from the main loop.
   /// The default is a clock that stands still at 0 (no pure virtual functions in port
   /// interfaces: firmware needs nothing from the C++ runtime library).
@@ -17,8 +20,6 @@ class MonotonicClock {
  protected:
   MonotonicClock() = default;
   ~MonotonicClock() = default;
-  MonotonicClock(const MonotonicClock&) = delete;
-  MonotonicClock& operator=(const MonotonicClock&) = delete;
 };
 
 }  // namespace costa

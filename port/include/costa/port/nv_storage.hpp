@@ -15,6 +15,9 @@ namespace costa {
 /// calls them only on an explicit save or restore request, never while handling ordinary frames.
 class NvStorage {
  public:
+  NvStorage(const NvStorage&) = delete;
+  NvStorage& operator=(const NvStorage&) = delete;
+
   // The defaults describe a device without storage: size 0, every access fails. (No pure
   // virtual functions in port interfaces: firmware needs nothing from the C++ runtime library.)
 
@@ -46,8 +49,6 @@ class NvStorage {
  protected:
   NvStorage() = default;
   ~NvStorage() = default;
-  NvStorage(const NvStorage&) = delete;
-  NvStorage& operator=(const NvStorage&) = delete;
 };
 
 }  // namespace costa

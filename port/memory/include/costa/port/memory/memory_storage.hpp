@@ -84,7 +84,7 @@ class MemoryStorageOf : public MemoryStorage {
   }
 
  private:
-  uint8_t buffer_[Size];
+  uint8_t buffer_[Size]{};
 };
 
 }  // namespace costa::port
