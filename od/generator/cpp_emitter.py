@@ -113,7 +113,7 @@ def _initializer_text(block: Block, variable: str) -> list:
             lines.append(f"{_INDENT * 4}{text},  // {member.name}")
         lines.append(f"{_INDENT * 2}}},  // {top.name}")
     if not block.members:
-        lines.append(f"{_INDENT * 2}0u,  // unused_")
+        lines.append(f"{_INDENT * 2}0U,  // unused_")
     lines.append("};")
     return lines
 
@@ -155,7 +155,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
         lines += ["};", ""]
     for obj in device.objects:
         lines.append(f"// 0x{obj.index:04X} {comment_text(obj.name)}")
-        lines.append(f"constexpr costa::od::SubEntry kSubs_{obj.index:04X}[] = {{")
+        lines.append(f"constexpr costa::od::SubEntry kSubs{obj.index:04X}[] = {{")
         for entry in obj.entries:
             key = (entry.index, entry.sub)
             limits = f"&kLimits[{row_of[key]}]" if key in row_of else "nullptr"
@@ -167,7 +167,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
     lines.append("constexpr costa::od::Object kObjects[] = {")
     for obj in device.objects:
         lines.append(f"{_INDENT * 2}{{0x{obj.index:04X}, costa::od::ObjectCode::"
-                     f"{OBJECT_CODES[obj.code]}, {len(obj.entries)}, kSubs_{obj.index:04X}}},")
+                     f"{OBJECT_CODES[obj.code]}, {len(obj.entries)}, kSubs{obj.index:04X}}},")
     lines += ["};", ""]
     for check in layout.size_checks:
         lines.append(f"static_assert({check.expression} == {check.size}, "
@@ -179,7 +179,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
               f"{_INDENT * 2}&kConstants,",
               f"{_INDENT * 2}&kDefaults,",
               f"{_INDENT * 2}sizeof(Values),",
-              f"{_INDENT * 2}0x{layout_id(device):08X}u,",
+              f"{_INDENT * 2}0x{layout_id(device):08X}U,",
               f"{_INDENT * 2}{text_literal(device.product_name)},",
               "};", "", f"}}  // namespace costa::gen::{name}", ""]
     return "\n".join(lines)

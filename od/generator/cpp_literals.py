@@ -37,12 +37,12 @@ def comment_text(text: str) -> str:
 
 
 def float32_literal(value: float) -> str:
-    """The shortest decimal that reads back as the same binary32 number, with suffix f."""
+    """The shortest decimal that reads back as the same binary32 number, with suffix F."""
     for precision in range(1, 10):
         text = f"{value:.{precision}g}"
         if to_float32(float(text)) == value:
             break
-    return float64_literal(float(text)) + "f"  # Python's spelling of the same short decimal
+    return float64_literal(float(text)) + "F"  # Python's spelling of the same short decimal
 
 
 def float64_literal(value: float) -> str:
@@ -57,7 +57,7 @@ def integer_literal(value: int, data_type: DataType) -> str:
     if kind in ("bool", "unsigned"):
         if size == 8:
             return f"0x{value:016X}ULL"
-        return f"0x{value:08X}u" if size == 4 else f"{value}u"
+        return f"0x{value:08X}U" if size == 4 else f"{value}U"
     low = integer_range(data_type)[0]
     if size == 8:
         return "(-9223372036854775807LL - 1)" if value == low else f"{value}LL"
@@ -76,7 +76,7 @@ def scalar_literal(value, data_type: DataType) -> str:
 def octets_literal(data: bytes, capacity: int) -> str:
     """Initializer of a uint8_t[capacity] array: every byte written, zeros after the data."""
     padded = data + bytes(capacity - len(data))
-    return "{" + ", ".join(f"0x{b:02X}u" for b in padded) + "}"
+    return "{" + ", ".join(f"0x{b:02X}U" for b in padded) + "}"
 
 
 def limit_pattern(value, data_type: DataType) -> int:

@@ -104,7 +104,7 @@ class ExampleOutputTest(unittest.TestCase):
         self.assertIn(", 1, 7, offsetof(Values, x2009_lss_settings)", self.cpp)
 
     def test_objects_sorted(self):
-        rows = re.findall(r"\{0x([0-9A-F]{4}), costa::od::ObjectCode::(\w+), (\d+), kSubs_",
+        rows = re.findall(r"\{0x([0-9A-F]{4}), costa::od::ObjectCode::(\w+), (\d+), kSubs",
                           self.cpp)
         self.assertEqual(len(rows), 31)
         self.assertEqual([r[0] for r in rows], sorted(r[0] for r in rows))
@@ -119,10 +119,10 @@ class ExampleOutputTest(unittest.TestCase):
 
     def test_default_literals(self):
         for literal in ("(-2147483647 - 1),", "(-9223372036854775807LL - 1),",
-                        "0xFFFFFFFFFFFFFFFFULL,", "3.14159f,", "-0.0025,", "-32768,",
+                        "0xFFFFFFFFFFFFFFFFULL,", "3.14159F,", "-0.0025,", "-32768,",
                         '"Costa \\"v1\\"\\\\\\?",', '"Costa Example",',
-                        "{0x01u, 0x02u, 0xA0u, 0xFFu, 0x00u, 0x00u},", '{"ab", ""},',
-                        "{-7, -7},", "0x00000080u,  // x1014_cob_id_emcy"):
+                        "{0x01U, 0x02U, 0xA0U, 0xFFU, 0x00U, 0x00U},", '{"ab", ""},',
+                        "{-7, -7},", "0x00000080U,  // x1014_cob_id_emcy"):
             with self.subTest(literal=literal):
                 self.assertIn(literal, self.cpp)
 
@@ -133,7 +133,7 @@ class ExampleOutputTest(unittest.TestCase):
         layout = zlib.crc32(rows.encode("ascii"))
         self.assertIn("const costa::od::Definition kDefinition = {\n    kObjects,\n    31,\n"
                       "    &kConstants,\n    &kDefaults,\n    sizeof(Values),\n"
-                      f"    0x{layout:08X}u,\n    \"Costa example device\",\n}};", self.cpp)
+                      f"    0x{layout:08X}U,\n    \"Costa example device\",\n}};", self.cpp)
 
     def test_size_checks(self):
         self.assertIn('static_assert(sizeof(Values::x2003_serial_text) == 21, '
@@ -178,7 +178,7 @@ class LayoutIdTest(unittest.TestCase):
     def layout_id(self, stored, volatile):
         result = run_text(self.BASE.format(stored=stored, volatile=volatile))
         source = result.files["test_od.cpp"]
-        return re.search(r"sizeof\(Values\),\n +0x([0-9A-F]{8})u,", source).group(1)
+        return re.search(r"sizeof\(Values\),\n +0x([0-9A-F]{8})U,", source).group(1)
 
     def test_layout_id_follows_stored_entries_only(self):
         reference = self.layout_id("0x0006", "0x0006")
@@ -197,7 +197,7 @@ class SmallOutputTest(unittest.TestCase):
         self.assertEqual(result.status, 0)
         header = result.files["test_od.hpp"]
         self.assertIn("struct Values {\n  uint8_t unused_;", header)
-        self.assertIn("0u,  // unused_", result.files["test_od.cpp"])
+        self.assertIn("0U,  // unused_", result.files["test_od.cpp"])
         self.assertIn('"test",', result.files["test_od.cpp"])  # no ProductName
         self.assertIn("kLargestValue = 4;", header)
         self.assertIn("kHeartbeatConsumers = 0;", header)
@@ -206,11 +206,11 @@ class SmallOutputTest(unittest.TestCase):
 
     def test_literal_helpers(self):
         self.assertEqual(c_string(b'a"b\\c?\n\x01\xe9'), '"a\\"b\\\\c\\?\\012\\001\\351"')
-        self.assertEqual(float32_literal(0.5), "0.5f")
-        self.assertEqual(float32_literal(1e20), "1e+20f")
-        self.assertEqual(float32_literal(3.0), "3.0f")
+        self.assertEqual(float32_literal(0.5), "0.5F")
+        self.assertEqual(float32_literal(1e20), "1e+20F")
+        self.assertEqual(float32_literal(3.0), "3.0F")
         self.assertEqual(integer_literal(-128, T["INTEGER8"]), "-128")
-        self.assertEqual(integer_literal(255, T["UNSIGNED8"]), "255u")
+        self.assertEqual(integer_literal(255, T["UNSIGNED8"]), "255U")
         self.assertEqual(integer_literal(5, T["INTEGER64"]), "5LL")
 
 
