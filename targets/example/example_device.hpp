@@ -24,7 +24,7 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   static constexpr uint16_t kCommand = 0x2002;
   static constexpr uint16_t kScratchPad = 0x2008;
   static constexpr uint16_t kOperatingMode = 0x2010;
-  static constexpr size_t kScratchPadCapacity = 12U * 1024U;
+  static constexpr size_t kScratchPadCapacity = size_t{12} * 1024U;
 
   /// Attaches itself to `node` (hooks and events). Call before `node.start()`. `serialNumber`
   /// goes into 0x1018:04 (so that several example nodes can be told apart by LSS).

@@ -3,6 +3,7 @@
 // two angles packed into the TPDO's first four bytes. Pure functions, freestanding.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 namespace costa::gefran {
@@ -43,11 +44,11 @@ constexpr uint32_t outputAngle(uint16_t raw, const AngleSettings& settings) noex
 /// significant first (0x5001 = 1).
 inline void packAngles(uint16_t angle1, uint16_t angle2, bool littleEndian, uint8_t* out) noexcept {
   const uint16_t angles[2] = {angle1, angle2};
-  for (int i = 0; i < 2; ++i) {
+  for (size_t i = 0; i < 2U; ++i) {
     const auto high = static_cast<uint8_t>(angles[i] >> 8U);
     const auto low = static_cast<uint8_t>(angles[i]);
-    out[2 * i] = littleEndian ? low : high;
-    out[2 * i + 1] = littleEndian ? high : low;
+    out[2U * i] = littleEndian ? low : high;
+    out[2U * i + 1U] = littleEndian ? high : low;
   }
 }
 
@@ -58,6 +59,9 @@ constexpr uint16_t rawFromDegrees(double degrees) noexcept {
   if (turns < 0) {
     turns += 1.0;
   }
+  // turns is in [0, 1): adding 0.5 and truncating rounds to nearest (std::lround is neither
+  // constexpr nor freestanding).
+  // NOLINTNEXTLINE(bugprone-incorrect-roundings): the value is never negative
   return static_cast<uint16_t>(static_cast<uint32_t>(turns * kRawCounts + 0.5) % kRawCounts);
 }
 

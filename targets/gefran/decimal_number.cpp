@@ -1,7 +1,6 @@
 #include "decimal_number.hpp"
 
 #include <float.h>
-#include <limits.h>
 #include <stdint.h>
 
 namespace costa::gefran {
@@ -41,6 +40,59 @@ double scale(uint64_t mantissa, int exponent) noexcept {
   return result;
 }
 
+/// The digits of a number, with at most one '.' among them.
+struct Digits {
+  uint64_t mantissa = 0;
+  int exponent = 0;  ///< of the last digit kept in `mantissa`
+  bool any = false;
+};
+
+/// Reads digits and an optional '.'; `*text` moves past them.
+Digits readDigits(const char** text) noexcept {
+  Digits digits;
+  bool fraction = false;
+  const char* at = *text;
+  for (;; ++at) {
+    if (*at == '.' && !fraction) {
+      fraction = true;
+      continue;
+    }
+    if (!isDigit(*at)) {
+      break;
+    }
+    digits.any = true;
+    if (digits.mantissa <= (UINT64_MAX - 9U) / 10U) {
+      digits.mantissa = digits.mantissa * 10U + digitOf(*at);
+      digits.exponent -= fraction ? 1 : 0;
+    } else {
+      digits.exponent += fraction ? 0 : 1;  // a digit beyond what the mantissa holds: dropped
+    }
+  }
+  *text = at;
+  return digits;
+}
+
+/// Reads an exponent after its 'e': optional sign, at least one digit. Returns the first
+/// character after it, or nullptr when there is no digit. Exponents beyond kExponentLimit are
+/// read as about kExponentLimit * 10, which over- or underflows just the same.
+const char* parseExponent(const char* text, int* exponent) noexcept {
+  const bool negative = *text == '-';
+  if (*text == '+' || *text == '-') {
+    ++text;
+  }
+  if (!isDigit(*text)) {
+    return nullptr;
+  }
+  int written = 0;
+  for (; isDigit(*text); ++text) {
+    if (written <= kExponentLimit) {
+      written = written * 10 + static_cast<int>(digitOf(*text));
+    }
+  }
+  *exponent = negative ? -written : written;
+  return text;
+}
+
 }  // namespace
 
 const char* skipSpace(const char* text) noexcept {
@@ -50,7 +102,7 @@ const char* skipSpace(const char* text) noexcept {
   return text;
 }
 
-const char* parseInteger(const char* text, long* value) noexcept {
+const char* parseInteger(const char* text, int64_t* value) noexcept {
   const bool negative = *text == '-';
   if (*text == '+' || *text == '-') {
     ++text;
@@ -58,17 +110,17 @@ const char* parseInteger(const char* text, long* value) noexcept {
   if (!isDigit(*text)) {
     return nullptr;
   }
-  // Accumulated as a negative number: LONG_MIN has no positive counterpart.
-  long result = 0;
+  // Accumulated as a negative number: INT64_MIN has no positive counterpart.
+  int64_t result = 0;
   for (; isDigit(*text); ++text) {
-    const auto digit = static_cast<long>(digitOf(*text));
-    if (result < (LONG_MIN + digit) / 10) {
+    const auto digit = static_cast<int64_t>(digitOf(*text));
+    if (result < (INT64_MIN + digit) / 10) {
       return nullptr;
     }
     result = result * 10 - digit;
   }
   if (!negative) {
-    if (result == LONG_MIN) {
+    if (result == INT64_MIN) {
       return nullptr;
     }
     result = -result;
@@ -82,45 +134,19 @@ const char* parseDecimal(const char* text, double* value) noexcept {
   if (*text == '+' || *text == '-') {
     ++text;
   }
-  uint64_t mantissa = 0;
-  int exponent = 0;  // of the last digit kept in `mantissa`
-  bool anyDigit = false;
-  bool fraction = false;
-  for (;; ++text) {
-    if (*text == '.' && !fraction) {
-      fraction = true;
-      continue;
-    }
-    if (!isDigit(*text)) {
-      break;
-    }
-    anyDigit = true;
-    if (mantissa <= (UINT64_MAX - 9U) / 10U) {
-      mantissa = mantissa * 10U + digitOf(*text);
-      exponent -= fraction ? 1 : 0;
-    } else {
-      exponent += fraction ? 0 : 1;  // a digit beyond what the mantissa holds: dropped
-    }
-  }
-  if (!anyDigit) {
+  const Digits digits = readDigits(&text);
+  if (!digits.any) {
     return nullptr;
   }
+  const uint64_t mantissa = digits.mantissa;
+  int exponent = digits.exponent;
   if (*text == 'e' || *text == 'E') {
-    ++text;
-    const bool negativeExponent = *text == '-';
-    if (*text == '+' || *text == '-') {
-      ++text;
-    }
-    if (!isDigit(*text)) {
+    int written = 0;
+    text = parseExponent(text + 1, &written);
+    if (text == nullptr) {
       return nullptr;  // "1e", "1e+": the stream fails too
     }
-    int written = 0;
-    for (; isDigit(*text); ++text) {
-      if (written <= kExponentLimit) {
-        written = written * 10 + static_cast<int>(digitOf(*text));
-      }
-    }
-    exponent += negativeExponent ? -written : written;
+    exponent += written;
   }
   double result = 0.0;
   if (mantissa != 0U && exponent > kExponentLimit) {

@@ -2,6 +2,8 @@
 // without the C++ library: for the simulation commands, on firmware as in costa-slave.
 #pragma once
 
+#include <stdint.h>
+
 namespace costa::gefran {
 
 /// True for the characters `std::isspace` accepts in the "C" locale.
@@ -14,8 +16,8 @@ const char* skipSpace(const char* text) noexcept;
 
 /// Reads an integer at `text` (no leading white space): optional sign, then decimal digits, as
 /// far as they go. Returns the first character after it, or nullptr when there is no digit or
-/// the value does not fit a long.
-const char* parseInteger(const char* text, long* value) noexcept;
+/// the value does not fit an int64_t.
+const char* parseInteger(const char* text, int64_t* value) noexcept;
 
 /// Reads a number at `text` (no leading white space): optional sign, digits with an optional
 /// '.' and fraction (at least one digit in all), optional exponent ('e' or 'E', optional sign,

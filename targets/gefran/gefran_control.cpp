@@ -7,7 +7,7 @@ namespace costa::gefran {
 namespace {
 
 /// Largest raw reading of a 14-bit chip.
-constexpr long kLargestRaw = 16383;
+constexpr int64_t kLargestRaw = 16383;
 /// Larger angles are refused: rawFromDegrees() needs the number of turns to fit an int64_t.
 constexpr double kLargestDegrees = 1e18;
 
@@ -40,7 +40,7 @@ Word nextWord(const char** text) noexcept {
 
 /// Reads a raw reading after white space; false when there is none or it is out of range.
 bool nextRaw(const char** text, uint16_t* raw) noexcept {
-  long value = -1;
+  int64_t value = -1;
   const char* end = parseInteger(skipSpace(*text), &value);
   if (end == nullptr || value < 0 || value > kLargestRaw) {
     return false;

@@ -103,7 +103,7 @@ void GefranDevice::updateAngles() noexcept {
 }
 
 void GefranDevice::updateErrors() noexcept {
-  uint8_t faults = static_cast<uint8_t>(sensors_.faults() | storedFaults_);
+  auto faults = static_cast<uint8_t>(sensors_.faults() | storedFaults_);
   if ((faults & kMagneticField) != 0U) {
     faults |= kChip1Error | kChip2Error;  // 0x83 (E15)
   }

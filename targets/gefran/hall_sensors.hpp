@@ -31,6 +31,8 @@ class HallSensors {
   ~HallSensors() = default;
   HallSensors(const HallSensors&) = default;
   HallSensors& operator=(const HallSensors&) = default;
+  HallSensors(HallSensors&&) = default;
+  HallSensors& operator=(HallSensors&&) = default;
 };
 
 class SimulatedHallSensors final : public HallSensors {

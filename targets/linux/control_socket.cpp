@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <system_error>
 
 namespace costa::host {
 
@@ -24,14 +25,17 @@ bool ControlSocket::open(const std::string& path, std::string* error) {
   }
   fd_ = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
   if (fd_ < 0) {
-    *error = std::string("cannot create the control socket: ") + std::strerror(errno);
+    const int code = errno;
+    *error = "cannot create the control socket: " + std::system_category().message(code);
     return false;
   }
   address.sun_family = AF_UNIX;
   std::memcpy(address.sun_path, path.c_str(), path.size());
   ::unlink(path.c_str());
+  // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): the socket API takes sockaddr*
   if (::bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof(address)) != 0) {
-    *error = "cannot bind the control socket " + path + ": " + std::strerror(errno);
+    const int code = errno;
+    *error = "cannot bind the control socket " + path + ": " + std::system_category().message(code);
     ::close(fd_);
     fd_ = -1;
     return false;
@@ -40,13 +44,15 @@ bool ControlSocket::open(const std::string& path, std::string* error) {
   return true;
 }
 
-void ControlSocket::serve(const std::function<std::string(const std::string&)>& handle) {
+void ControlSocket::serve(const std::function<std::string(const std::string&)>& handle) const {
   for (;;) {
     char buffer[512];
     sockaddr_un sender{};
     socklen_t senderLength = sizeof(sender);
-    const ssize_t got = ::recvfrom(fd_, buffer, sizeof(buffer) - 1U, 0,
-                                   reinterpret_cast<sockaddr*>(&sender), &senderLength);
+    // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): the socket API takes sockaddr*
+    auto* senderAddress = reinterpret_cast<sockaddr*>(&sender);
+    const ssize_t got =
+        ::recvfrom(fd_, buffer, sizeof(buffer) - 1U, 0, senderAddress, &senderLength);
     if (got < 0) {
       return;
     }
@@ -57,8 +63,7 @@ void ControlSocket::serve(const std::function<std::string(const std::string&)>& 
     const std::string result = handle(command);
     const std::string reply = result.empty() ? "ok" : "error: " + result;
     if (senderLength > sizeof(sa_family_t)) {
-      ::sendto(fd_, reply.data(), reply.size(), 0, reinterpret_cast<sockaddr*>(&sender),
-               senderLength);
+      ::sendto(fd_, reply.data(), reply.size(), 0, senderAddress, senderLength);
     }
   }
 }

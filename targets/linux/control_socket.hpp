@@ -19,7 +19,7 @@ class ControlSocket {
   int fd() const { return fd_; }
 
   /// Reads waiting commands, answers each with `handle(command)` ("" = ok).
-  void serve(const std::function<std::string(const std::string&)>& handle);
+  void serve(const std::function<std::string(const std::string&)>& handle) const;
 
  private:
   int fd_ = -1;

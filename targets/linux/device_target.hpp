@@ -22,7 +22,11 @@ struct TargetOptions {
 
 class DeviceTarget {
  public:
+  DeviceTarget() = default;
   virtual ~DeviceTarget() = default;
+  DeviceTarget(const DeviceTarget&) = delete;
+  DeviceTarget& operator=(const DeviceTarget&) = delete;
+
   virtual void start(Microseconds now) = 0;
   virtual void onFrame(const CanFrame& frame, Microseconds now) = 0;
   /// Runs node and device; returns the next deadline.

@@ -24,11 +24,11 @@ std::string formatFrame(const CanFrame& frame) {
 
 namespace {
 
-bool parseHex(const std::string& token, unsigned long limit, unsigned long* value) {
+bool parseHex(const std::string& token, uint32_t limit, uint32_t* value) {
   if (token.empty() || token.size() > 8U) {
     return false;
   }
-  unsigned long result = 0;
+  uint32_t result = 0;
   for (const char c : token) {
     unsigned digit = 0;
     if (c >= '0' && c <= '9') {
@@ -62,13 +62,13 @@ bool parseFrame(const std::string& text, CanFrame* frame, std::string* error, un
     return false;
   }
   CanFrame result;
-  unsigned long id = 0;
+  uint32_t id = 0;
   result.extended = tokens[0].size() > 3U;
-  if (!parseHex(tokens[0], result.extended ? 0x1FFFFFFFUL : 0x7FFUL, &id)) {
+  if (!parseHex(tokens[0], result.extended ? 0x1FFFFFFFU : 0x7FFU, &id)) {
     *error = "bad identifier '" + tokens[0] + "'";
     return false;
   }
-  result.id = static_cast<uint32_t>(id);
+  result.id = id;
   const std::string& dlcToken = tokens[1];
   if (dlcToken.size() != 3U || dlcToken[0] != '[' || dlcToken[2] != ']' || dlcToken[1] < '0' ||
       dlcToken[1] > '8') {
@@ -87,10 +87,10 @@ bool parseFrame(const std::string& text, CanFrame* frame, std::string* error, un
     }
     for (size_t i = 0; i < result.dlc; ++i) {
       const std::string& byte = tokens[i + 2U];
-      unsigned long value = 0;
+      uint32_t value = 0;
       if (byte == "xx" || byte == "XX") {
         mask |= 1U << i;
-      } else if (byte.size() != 2U || !parseHex(byte, 0xFFUL, &value)) {
+      } else if (byte.size() != 2U || !parseHex(byte, 0xFFU, &value)) {
         *error = "bad data byte '" + byte + "'";
         return false;
       }

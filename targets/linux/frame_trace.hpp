@@ -4,6 +4,7 @@
 #include <stdint.h>
 
 #include <string>
+#include <vector>
 
 #include "costa/od/definition.hpp"
 #include "costa/od/object_dictionary.hpp"
@@ -48,7 +49,7 @@ class FrameTracer {
   bool downloading_ = false;
   uint16_t index_ = 0;
   uint8_t subIndex_ = 0;
-  std::string collected_;
+  std::vector<uint8_t> collected_;
   // Block SDO transfer being watched: in kDownloadSegments the client's frames are segments,
   // in kUploadSegments the server's; kDownloadEnd/kUploadEnd: the segment marked last was
   // acknowledged, the end frame comes next.

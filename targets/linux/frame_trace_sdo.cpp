@@ -49,12 +49,11 @@ std::string FrameTracer::describeSdoRequest(const CanFrame& frame, bool local) {
     case 0: {
       const size_t count = 7U - ((d[0] >> 1U) & 7U);
       const bool last = (d[0] & 1U) != 0U;
-      collected_.append(reinterpret_cast<const char*>(d + 1), count);
+      collected_.insert(collected_.end(), d + 1, d + 1 + count);
       std::string text = "SDO download segment " + formatValue(0, 0, d + 1, count, false);
       if (last && downloading_) {
         text += " (last) " + entryText(index_, subIndex_) + " = " +
-                formatValue(index_, subIndex_, reinterpret_cast<const uint8_t*>(collected_.data()),
-                            collected_.size(), local);
+                formatValue(index_, subIndex_, collected_.data(), collected_.size(), local);
         downloading_ = false;
       }
       return text;
@@ -99,12 +98,11 @@ std::string FrameTracer::describeSdoResponse(const CanFrame& frame, bool local) 
     case 0: {
       const size_t count = 7U - ((d[0] >> 1U) & 7U);
       const bool last = (d[0] & 1U) != 0U;
-      collected_.append(reinterpret_cast<const char*>(d + 1), count);
+      collected_.insert(collected_.end(), d + 1, d + 1 + count);
       std::string text = "SDO upload segment " + formatValue(0, 0, d + 1, count, false);
       if (last && uploading_) {
         text += " (last) " + entryText(index_, subIndex_) + " = " +
-                formatValue(index_, subIndex_, reinterpret_cast<const uint8_t*>(collected_.data()),
-                            collected_.size(), local);
+                formatValue(index_, subIndex_, collected_.data(), collected_.size(), local);
         uploading_ = false;
       }
       return text;

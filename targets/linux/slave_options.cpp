@@ -14,12 +14,53 @@ bool parseNodeId(const std::string& text, int* value) {
   }
   char* end = nullptr;
   errno = 0;
-  const long parsed = std::strtol(text.c_str(), &end, 0);
+  const auto parsed = std::strtol(text.c_str(), &end, 0);
   const bool valid = (parsed >= 1 && parsed <= 127) || parsed == 255;  // 255: unconfigured (LSS)
   if (errno != 0 || end == nullptr || *end != '\0' || !valid) {
     return false;
   }
   *value = static_cast<int>(parsed);
+  return true;
+}
+
+/// An option without a value: sets it and returns true, or returns false for anything else.
+bool setFlag(const std::string& argument, SlaveOptions* options) {
+  if (argument == "--help" || argument == "-h") {
+    options->help = true;
+  } else if (argument == "--trace") {
+    options->trace = true;
+  } else if (argument == "--list-devices") {
+    options->listDevices = true;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+/// Where the value of an option with a text value goes; nullptr for any other argument.
+std::string* textOption(const std::string& argument, SlaveOptions& options) {
+  if (argument == "--iface") {
+    return &options.interfaceName;
+  }
+  if (argument == "--storage") {
+    return &options.storagePath;
+  }
+  if (argument == "--control") {
+    return &options.controlPath;
+  }
+  return nullptr;
+}
+
+/// The device of complete options (not --help, --list-devices) exists.
+bool checkDevice(const SlaveOptions& options, std::string* error) {
+  if (options.device.empty()) {
+    *error = "no DEVICE given (one of: " + deviceNames() + ")";
+    return false;
+  }
+  if (findDevice(options.device) == nullptr) {
+    *error = "unknown device '" + options.device + "' (one of: " + deviceNames() + ")";
+    return false;
+  }
   return true;
 }
 
@@ -56,22 +97,11 @@ bool parseSlaveOptions(const std::vector<std::string>& arguments, SlaveOptions* 
       *out = arguments[++i];
       return true;
     };
-    if (argument == "--help" || argument == "-h") {
-      options->help = true;
-    } else if (argument == "--trace") {
-      options->trace = true;
-    } else if (argument == "--list-devices") {
-      options->listDevices = true;
-    } else if (argument == "--iface") {
-      if (!value(&options->interfaceName)) {
-        return false;
-      }
-    } else if (argument == "--storage") {
-      if (!value(&options->storagePath)) {
-        return false;
-      }
-    } else if (argument == "--control") {
-      if (!value(&options->controlPath)) {
+    if (setFlag(argument, options)) {
+      continue;
+    }
+    if (std::string* destination = textOption(argument, *options)) {
+      if (!value(destination)) {
         return false;
       }
     } else if (argument == "--node-id") {
@@ -93,18 +123,7 @@ bool parseSlaveOptions(const std::vector<std::string>& arguments, SlaveOptions* 
       return false;
     }
   }
-  if (options->help || options->listDevices) {
-    return true;
-  }
-  if (options->device.empty()) {
-    *error = "no DEVICE given (one of: " + deviceNames() + ")";
-    return false;
-  }
-  if (findDevice(options->device) == nullptr) {
-    *error = "unknown device '" + options->device + "' (one of: " + deviceNames() + ")";
-    return false;
-  }
-  return true;
+  return options->help || options->listDevices || checkDevice(*options, error);
 }
 
 }  // namespace costa::host

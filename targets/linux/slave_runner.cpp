@@ -5,9 +5,9 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <string>
+#include <system_error>
 
 #include "control_socket.hpp"
 #include "costa/port/linux/monotonic_clock.hpp"
@@ -19,9 +19,10 @@
 namespace costa::host {
 namespace {
 
+// NOLINTNEXTLINE(cppcoreguidelines-avoid-non-const-global-variables): all a handler may set
 volatile sig_atomic_t stopRequested = 0;
 
-void onStopSignal(int) {
+void onStopSignal(int /*signal*/) {
   stopRequested = 1;
 }
 
@@ -86,6 +87,40 @@ int timeoutMilliseconds(Microseconds deadline, Microseconds now, bool txPending)
   return static_cast<int>((wait + 999U) / 1000U);
 }
 
+/// Lets SIGINT and SIGTERM stop the loop. They are blocked except while the loop waits (in
+/// ppoll, with the mask returned here), so a stop request is never missed between two waits.
+sigset_t catchStopSignals() {
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  sigset_t blocked;
+  sigset_t waiting;
+  sigemptyset(&blocked);
+  sigaddset(&blocked, SIGINT);
+  sigaddset(&blocked, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &blocked, &waiting);
+  sigdelset(&waiting, SIGINT);
+  sigdelset(&waiting, SIGTERM);
+  return waiting;
+}
+
+/// Passes every frame the socket holds to the target.
+void receiveFrames(port::SocketCanPort& socket, Tracer& tracer, DeviceTarget& target,
+                   port::LinuxMonotonicClock& clock) {
+  CanFrame frame;
+  for (;;) {
+    const auto received = socket.receive(&frame);
+    if (received == port::SocketCanPort::Received::kFrame) {
+      tracer.line("rx", frame);
+      target.onFrame(frame, clock.nowMicroseconds());
+    } else if (received != port::SocketCanPort::Received::kErrorFrame) {
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 int runSlave(const SlaveOptions& options) {
@@ -114,20 +149,7 @@ int runSlave(const SlaveOptions& options) {
     return 1;
   }
 
-  struct sigaction action {};
-  action.sa_handler = onStopSignal;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-  sigset_t blocked;
-  sigset_t waiting;
-  sigemptyset(&blocked);
-  sigaddset(&blocked, SIGINT);
-  sigaddset(&blocked, SIGTERM);
-  sigprocmask(SIG_BLOCK, &blocked, &waiting);
-  sigdelset(&waiting, SIGINT);
-  sigdelset(&waiting, SIGTERM);
-
+  const sigset_t waiting = catchStopSignals();
   target->start(clock.nowMicroseconds());
   std::fprintf(stderr, "costa-slave: %s on %s, node-id %u\n", options.device.c_str(),
                options.interfaceName.c_str(), target->node().nodeId());
@@ -138,8 +160,7 @@ int runSlave(const SlaveOptions& options) {
     const int timeout =
         timeoutMilliseconds(deadline, clock.nowMicroseconds(), target->node().txPending());
     pollfd descriptors[2] = {{socket.fd(), POLLIN, 0}, {control.fd(), POLLIN, 0}};
-    pollfd& descriptor = descriptors[0];
-    const timespec wait{timeout / 1000, static_cast<long>(timeout % 1000) * 1000000L};
+    const timespec wait{timeout / 1000, (timeout % 1000) * 1000000L};
     const nfds_t count = control.fd() >= 0 ? 2U : 1U;
     const int ready = ppoll(descriptors, count, &wait, &waiting);  // signals arrive only here
     if (ready > 0 && count == 2U && (descriptors[1].revents & POLLIN) != 0) {
@@ -149,25 +170,18 @@ int runSlave(const SlaveOptions& options) {
       });
     }
     if (ready < 0 && errno != EINTR) {
-      std::fprintf(stderr, "costa-slave: poll failed: %s\n", std::strerror(errno));
+      const int code = errno;
+      std::fprintf(stderr, "costa-slave: poll failed: %s\n",
+                   std::system_category().message(code).c_str());
       return 1;
     }
     if (ready > 0) {
-      if ((descriptor.revents & (POLLERR | POLLHUP | POLLNVAL)) != 0) {
+      if ((descriptors[0].revents & (POLLERR | POLLHUP | POLLNVAL)) != 0) {
         std::fprintf(stderr, "costa-slave: CAN interface %s failed\n",
                      options.interfaceName.c_str());
         return 1;
       }
-      CanFrame frame;
-      for (;;) {
-        const auto received = socket.receive(&frame);
-        if (received == port::SocketCanPort::Received::kFrame) {
-          tracer.line("rx", frame);
-          target->onFrame(frame, clock.nowMicroseconds());
-        } else if (received != port::SocketCanPort::Received::kErrorFrame) {
-          break;
-        }
-      }
+      receiveFrames(socket, tracer, *target, clock);
     }
     if (target->node().txPending()) {
       target->node().flushTx();

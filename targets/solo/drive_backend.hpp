@@ -81,6 +81,8 @@ class DriveBackend {
   ~DriveBackend() = default;
   DriveBackend(const DriveBackend&) = default;
   DriveBackend& operator=(const DriveBackend&) = default;
+  DriveBackend(DriveBackend&&) = default;
+  DriveBackend& operator=(DriveBackend&&) = default;
 };
 
 }  // namespace costa::solo

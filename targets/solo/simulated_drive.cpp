@@ -4,6 +4,7 @@ namespace costa::solo {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kRpmPerS2 = 60.0;  // rev/s² → rpm/s
 
 double absolute(double x) {
   return x < 0 ? -x : x;
@@ -70,62 +71,23 @@ void SimulatedDrive::step(const DriveCommand& command, Microseconds elapsed) noe
 void SimulatedDrive::integrate(const DriveCommand& command, double dt) noexcept {
   const bool driving =
       command.outputEnabled && faults_ == 0U && command.commanding == CommandingMode::kDigital;
-  const double rpmPerS2 = 60.0;  // rev/s² → rpm/s
   const double before = speedRpm_;
-  double targetIq = 0;
   if (!driving) {
-    speedRpm_ = approach(speedRpm_, 0, kCoastRevPerS2 * rpmPerS2 * dt);
+    speedRpm_ = approach(speedRpm_, 0, kCoastRevPerS2 * kRpmPerS2 * dt);
     id_ = 0;
   } else if (command.control == ControlMode::kSpeed) {
-    double target = command.speedReferenceRpm < command.speedLimitRpm ? command.speedReferenceRpm
-                                                                      : command.speedLimitRpm;
-    if (command.clockwise) {
-      target = -target;
-    }
-    const bool speedingUp = absolute(target) > absolute(speedRpm_) && target * speedRpm_ >= 0;
-    double ramp = speedingUp ? command.accelerationRevPerS2 : command.decelerationRevPerS2;
-    if (ramp <= 0) {
-      ramp = kDefaultRampRevPerS2;
-    }
-    if (command.speedReferenceRpm == 0.0) {
-      ramp = kFastStopRevPerS2;  // manual lines 1276-1281: 0 bypasses the deceleration
-    }
-    speedRpm_ = approach(speedRpm_, target, ramp * rpmPerS2 * dt);
-    id_ = command.idReferenceA;
+    integrateSpeed(command, dt);
   } else if (command.control == ControlMode::kPosition) {
-    const double cpr = countsPerRevolution(command);
-    const double error = static_cast<double>(command.positionReference) - position_;
-    const double accel = kDefaultRampRevPerS2 * cpr;  // counts/s²
-    const double vmax = command.speedLimitRpm / 60.0 * cpr;
-    double vwanted = squareRoot(2.0 * accel * absolute(error));
-    vwanted = vwanted < vmax ? vwanted : vmax;
-    vwanted = error < 0 ? -vwanted : vwanted;
-    const double v = approach(speedRpm_ / 60.0 * cpr, vwanted, accel * dt);
-    speedRpm_ = v / cpr * 60.0;
-    id_ = command.idReferenceA;
-    if (absolute(error) <= absolute(v * dt) || absolute(error) < 0.5) {
-      position_ = static_cast<double>(command.positionReference);  // arrived: stop on the spot
-      speedRpm_ = 0;
-      iq_ = 0;
+    if (integratePosition(command, dt)) {
       return;
     }
-  } else {  // torque
-    double reference = command.torqueReferenceA;
-    reference = clamp(reference, -command.currentLimitA, command.currentLimitA);
-    if (command.clockwise) {
-      reference = -reference;
-    }
-    iq_ += (reference - iq_) * (dt / 0.005 > 1 ? 1 : dt / 0.005);
-    const double accel = iq_ * kRevPerS2PerAmp - 0.5 * speedRpm_ / 60.0;
-    speedRpm_ = clamp(speedRpm_ + accel * rpmPerS2 * dt, -30000, 30000);
-    targetIq = iq_;
-    id_ = command.idReferenceA;
+  } else {
+    integrateTorque(command, dt);
   }
   if (!driving || command.control != ControlMode::kTorque) {
     const double accelRevPerS2 = (speedRpm_ - before) / 60.0 / dt;
-    targetIq = driving ? accelRevPerS2 / kRevPerS2PerAmp + 0.01 * speedRpm_ / 60.0 : 0;
-    targetIq = clamp(targetIq, -command.currentLimitA, command.currentLimitA);
-    iq_ = targetIq;
+    const double targetIq = driving ? accelRevPerS2 / kRevPerS2PerAmp + 0.01 * speedRpm_ / 60.0 : 0;
+    iq_ = clamp(targetIq, -command.currentLimitA, command.currentLimitA);
   }
   const double revolutions = speedRpm_ / 60.0 * dt;
   position_ += revolutions * countsPerRevolution(command);
@@ -136,6 +98,56 @@ void SimulatedDrive::integrate(const DriveCommand& command, double dt) noexcept 
   }
   const double heating = kAmbientC + 0.2 * (iq_ * iq_ + id_ * id_);
   temperature_ += (heating - temperature_) * (dt / 30.0);
+}
+
+void SimulatedDrive::integrateSpeed(const DriveCommand& command, double dt) noexcept {
+  double target = command.speedReferenceRpm < command.speedLimitRpm ? command.speedReferenceRpm
+                                                                    : command.speedLimitRpm;
+  if (command.clockwise) {
+    target = -target;
+  }
+  const bool speedingUp = absolute(target) > absolute(speedRpm_) && target * speedRpm_ >= 0;
+  double ramp = speedingUp ? command.accelerationRevPerS2 : command.decelerationRevPerS2;
+  if (ramp <= 0) {
+    ramp = kDefaultRampRevPerS2;
+  }
+  if (command.speedReferenceRpm == 0.0) {
+    ramp = kFastStopRevPerS2;  // manual lines 1276-1281: 0 bypasses the deceleration
+  }
+  speedRpm_ = approach(speedRpm_, target, ramp * kRpmPerS2 * dt);
+  id_ = command.idReferenceA;
+}
+
+bool SimulatedDrive::integratePosition(const DriveCommand& command, double dt) noexcept {
+  const double cpr = countsPerRevolution(command);
+  const double error = static_cast<double>(command.positionReference) - position_;
+  const double accel = kDefaultRampRevPerS2 * cpr;  // counts/s²
+  const double vmax = command.speedLimitRpm / 60.0 * cpr;
+  double vwanted = squareRoot(2.0 * accel * absolute(error));
+  vwanted = vwanted < vmax ? vwanted : vmax;
+  vwanted = error < 0 ? -vwanted : vwanted;
+  const double v = approach(speedRpm_ / 60.0 * cpr, vwanted, accel * dt);
+  speedRpm_ = v / cpr * 60.0;
+  id_ = command.idReferenceA;
+  if (absolute(error) <= absolute(v * dt) || absolute(error) < 0.5) {
+    position_ = static_cast<double>(command.positionReference);  // arrived: stop on the spot
+    speedRpm_ = 0;
+    iq_ = 0;
+    return true;
+  }
+  return false;
+}
+
+void SimulatedDrive::integrateTorque(const DriveCommand& command, double dt) noexcept {
+  double reference = command.torqueReferenceA;
+  reference = clamp(reference, -command.currentLimitA, command.currentLimitA);
+  if (command.clockwise) {
+    reference = -reference;
+  }
+  iq_ += (reference - iq_) * (dt / 0.005 > 1 ? 1 : dt / 0.005);
+  const double accel = iq_ * kRevPerS2PerAmp - 0.5 * speedRpm_ / 60.0;
+  speedRpm_ = clamp(speedRpm_ + accel * kRpmPerS2 * dt, -30000, 30000);
+  id_ = command.idReferenceA;
 }
 
 void SimulatedDrive::read(DriveFeedback* feedback) noexcept {

@@ -36,6 +36,10 @@ class SimulatedDrive final : public DriveBackend {
 
  private:
   void integrate(const DriveCommand& command, double dt) noexcept;
+  void integrateSpeed(const DriveCommand& command, double dt) noexcept;
+  /// True when the motor has arrived at the position reference (and stopped there).
+  bool integratePosition(const DriveCommand& command, double dt) noexcept;
+  void integrateTorque(const DriveCommand& command, double dt) noexcept;
   static double countsPerRevolution(const DriveCommand& command) noexcept;
 
   double speedRpm_ = 0;

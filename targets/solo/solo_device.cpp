@@ -136,7 +136,7 @@ AbortCode SoloDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef
     if (kilohertz < 8U || kilohertz > 80U) {
       return AbortCode::kInvalidValue;
     }
-    dictionary.storeUnsigned(*ref.entry, kilohertz * 1000U);
+    dictionary.storeUnsigned(*ref.entry, uint64_t{kilohertz} * 1000U);
     return AbortCode::kNone;
   }
   const AbortCode checked = dictionary.check(*ref.entry, data, length);
