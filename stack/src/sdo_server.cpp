@@ -12,7 +12,6 @@ constexpr uint8_t kCcsDownloadSegment = 0;
 constexpr uint8_t kCcsInitiateDownload = 1;
 constexpr uint8_t kCcsInitiateUpload = 2;
 constexpr uint8_t kCcsUploadSegment = 3;
-constexpr uint8_t kCcsAbort = 4;
 constexpr uint8_t kCcsBlockUpload = 5;
 constexpr uint8_t kCcsBlockDownload = 6;
 
@@ -247,8 +246,8 @@ void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept
   const size_t remaining = size_ - done_;
   const size_t count = remaining < kSegmentBytes ? remaining : kSegmentBytes;
   const bool last = count == remaining;
-  uint8_t response[8] = {
-      static_cast<uint8_t>((toggle_ << 4U) | ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U))};
+  uint8_t response[8] = {static_cast<uint8_t>((static_cast<unsigned>(toggle_) << 4U) |
+                                              ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U))};
   const AbortCode read = reader_.read(done_, response + 1, count);
   if (read != AbortCode::kNone) {
     abortTransfer(read);

@@ -5,9 +5,9 @@
 #include <stdint.h>
 
 #include "costa/nmt_state.hpp"
-#include "costa/node_clock.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/port/can_frame.hpp"
+#include "costa/time.hpp"
 
 namespace costa {
 
@@ -32,9 +32,9 @@ class HeartbeatConsumer : public ObjectHook {
     uint8_t entry = 0;  ///< sub-index of 0x1016
   };
 
-  HeartbeatConsumer(od::ObjectDictionary& dictionary, HeartbeatMonitor* monitors, size_t capacity,
-                    const NodeClock& clock) noexcept
-      : dictionary_(dictionary), monitors_(monitors), capacity_(capacity), clock_(clock) {}
+  HeartbeatConsumer(od::ObjectDictionary& dictionary, HeartbeatMonitor* monitors,
+                    size_t capacity) noexcept
+      : dictionary_(dictionary), monitors_(monitors), capacity_(capacity) {}
 
   /// Reads every entry of 0x1016; monitoring of an entry starts at its first heartbeat. With
   /// `reset` every entry starts over; otherwise only entries whose value changed.
@@ -58,7 +58,6 @@ class HeartbeatConsumer : public ObjectHook {
   HeartbeatMonitor* monitors_;
   size_t capacity_;
   size_t count_ = 0;
-  const NodeClock& clock_;
 };
 
 }  // namespace costa

@@ -60,7 +60,7 @@ class StoreCommands : public ObjectHook {
 
 /// Bit mask of a storage group for StoreCommands and NodeSettings.
 constexpr uint32_t groupBit(uint8_t group) noexcept {
-  return group < 32U ? 1UL << group : 0U;
+  return group < 32U ? uint32_t{1} << group : 0U;
 }
 
 }  // namespace costa
