@@ -58,6 +58,23 @@ void SdoServer::endTransfer(AbortCode reason) noexcept {
   deadline_ = kNever;
 }
 
+bool SdoServer::valid() const noexcept {
+  if (state_ == State::kIdle) {
+    return deadline_ == kNever;
+  }
+  if (deadline_ == kNever || toggle_ > 1U) {
+    return false;
+  }
+  switch (state_) {
+    case State::kDownloadSegments: return true;
+    case State::kUploadSegments: return done_ < size_ || (done_ == 0U && size_ == 0U);
+    case State::kBlockDownload: return !blockDownload_.finished() && blockDownload_.valid();
+    case State::kBlockUpload: return !blockUpload_.finished() && blockUpload_.valid();
+    case State::kIdle: break;
+  }
+  return false;
+}
+
 Microseconds SdoServer::nextDeadline() const noexcept {
   if (state_ == State::kIdle) {
     return kNever;

@@ -47,6 +47,11 @@ class SdoServer {
 
   bool busy() const noexcept { return state_ != State::kIdle; }
 
+  /// Consistency of the transfer state (for tests and fuzzing): idle without a deadline, or a
+  /// transfer with a deadline, a toggle of 0 or 1, an upload position within the value, and a
+  /// block transfer whose own state is valid. O(1), changes nothing.
+  bool valid() const noexcept;
+
  private:
   enum class State : uint8_t {
     kIdle,
