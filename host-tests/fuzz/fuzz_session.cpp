@@ -97,7 +97,14 @@ class Session {
       storageChanges_ = storage.modifyingCalls();
       problem = checkStoredParameters(node.dictionary().definition(), node.nodeId(), storage);
     }
-    allowedBefore_ = allowedTransmitIds(node, device_->hasLss());
+    // A frame may wait in the node's queue while the controller refuses frames, and leave after
+    // its node-id or COB-ID changed: it may use any id allowed since the queue was last empty.
+    const CanIdSet allowedNow = allowedTransmitIds(node, device_->hasLss());
+    if (node.txPending()) {
+      allowedBefore_.merge(allowedNow);
+    } else {
+      allowedBefore_ = allowedNow;
+    }
     return problem;
   }
 
@@ -216,8 +223,8 @@ class Session {
     return runProcess();
   }
 
-  /// Checks the frames sent since the last check against the ids allowed before the event and
-  /// now; forgets them.
+  /// Checks the frames sent since the last check against the ids allowed now, before the
+  /// event, and since the transmit queue was last empty; forgets them.
   std::string checkFrames() {
     if (can_.count() == 0U) {
       return "";
@@ -243,7 +250,7 @@ class Session {
   std::string* trace_;
   Microseconds now_ = 0;
   Microseconds next_ = kNever;
-  CanIdSet allowedBefore_;
+  CanIdSet allowedBefore_;  ///< at the end of the last event, and while frames were queued
   size_t storageChanges_ = SIZE_MAX;  // the first check always runs
   uint64_t processCalls_ = 0;
 };

@@ -12,7 +12,8 @@ namespace costa::fuzz {
 /// Powers `device` (a fuzzedDeviceNames() entry) on as the input's header says and applies its
 /// events (fuzz_events.hpp). After power-on and after every event it checks:
 ///  * every frame transmitted since the previous check (frame_rules.hpp), against the CAN-IDs
-///    the node may use before and after the event;
+///    the node may use before and after the event, or at any point since its transmit queue was
+///    last empty (a frame queued while the controller refused frames leaves late);
 ///  * every dictionary value (dictionary_rules.hpp), and the CAN-IDs its COB-IDs configure
 ///    (frame_rules.hpp);
 ///  * the NMT, LSS and SDO state machines (state_rules.hpp);

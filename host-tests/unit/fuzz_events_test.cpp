@@ -133,6 +133,27 @@ TEST(FuzzSession, EntryNumbersWrapAroundTheDictionary) {
       << trace;  // 0x1000 is read-only
 }
 
+TEST(FuzzSession, AFrameQueuedBeforeANewNodeIdMayLeaveAfterIt) {
+  // The controller refuses frames; the SDO response of node 1 waits in the queue while LSS
+  // gives the node node-id 5 and a reset communication applies it. It leaves late, before the
+  // boot-up of node 5: no violation.
+  const std::vector<uint8_t> input = {
+      0x00, 0x80,                                                        // controller refuses
+      0xC0, 0x2B, 0x17, 0x10, 0x00, 0x0A, 0x00, 0x00, 0x00,              // 0x1017 = 10 ms
+      0x08, 0xE5, 0x07, 0x04, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,  // LSS configuration
+      0x08, 0xE5, 0x07, 0x11, 0x05, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,  // node-id 5
+      0x08, 0xE5, 0x07, 0x04, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,  // LSS waiting
+      0x02, 0x00, 0x00, 0x82, 0x00,                                      // NMT reset communication
+      0x81, 0x5E,                                                        // takes frames; 26 ms
+  };
+  std::string trace;
+  EXPECT_EQ(runFuzzInput("example", input.data(), input.size(), &trace), "") << trace;
+  EXPECT_NE(trace.find("  tx 581 [8] 60 17 10 00 00 00 00 00\n  tx 7E4 [8] 11 00"),
+            std::string::npos)
+      << trace;
+  EXPECT_NE(trace.find("  tx 705 [1] 00\n"), std::string::npos) << trace;
+}
+
 TEST(FuzzSession, AnEmcyOnTheNmtIdIsRefusedNotSent) {
   // 0x1014 = not valid, then valid on 0x000, then a SYNC of the wrong length raises an EMCY.
   const std::vector<uint8_t> input = {
