@@ -83,7 +83,13 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
   if (!cob::isValidNodeId(nodeId)) {
     return ids;
   }
-  ids.add(cob::kErrorControlBase + nodeId);
+  ids.add(cob::kErrorControlBase + nodeId);  // boot-up, heartbeat, guarding: every state
+  // CiA 301 7.3.2.2: SDO, EMCY and SYNC in pre-operational and operational, PDOs in
+  // operational only.
+  const NmtState state = node.state();
+  if (state != NmtState::kPreOperational && state != NmtState::kOperational) {
+    return ids;
+  }
   ids.add(cob::kSdoTxBase + nodeId);
   const od::ObjectDictionary& dictionary = node.dictionary();
   if (dictionary.findObject(kEmcyCobId) == nullptr) {
@@ -98,6 +104,9 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
   if ((sync & kSyncProducerBit) != 0U && plainStandardId(sync) &&
       !restrictedCanId(sync & kIdBits)) {
     ids.add(sync & kIdBits);
+  }
+  if (state != NmtState::kOperational) {
+    return ids;
   }
   forEachPdo(node, [&](const PdoCobId& cob, bool receive) {
     if (!receive && cob.valid && pdoIdPermitted(node, false, cob.id)) {

@@ -31,13 +31,14 @@ class CanIdSet {
 /// 0x101-0x180, 0x581-0x5FF, 0x601-0x67F, 0x6E0-0x6FF, 0x701-0x77F, 0x780-0x7FF).
 bool restrictedCanId(uint32_t id);
 
-/// The CAN-IDs `node` may transmit on now:
-///  * with a node-id n (1..127): boot-up/heartbeat/guarding 0x700 + n and SDO 0x580 + n;
-///  * EMCY: the COB-ID of 0x1014 when valid and not restricted (0x80 + n without 0x1014);
-///  * SYNC: the COB-ID of 0x1005 when it produces SYNC (bit 30) and the id is not restricted;
-///  * each TPDO whose COB-ID (0x1800..0x19FF sub-index 1) is valid, 11-bit and allowed for a
-///    TPDO (the profile's range, else not restricted);
-///  * LSS responses 0x7E4 when the device has LSS.
+/// The CAN-IDs `node` may transmit on now, in its NMT state (CiA 301 7.3.2.2):
+///  * LSS responses 0x7E4 when the device has LSS, in any state;
+///  * with a node-id n (1..127): boot-up/heartbeat/guarding 0x700 + n in any state;
+///  * in pre-operational and operational: SDO 0x580 + n; EMCY: the COB-ID of 0x1014 when valid
+///    and not restricted (0x80 + n without 0x1014); SYNC: the COB-ID of 0x1005 when it
+///    produces SYNC (bit 30) and the id is not restricted;
+///  * in operational: each TPDO whose COB-ID (0x1800..0x19FF sub-index 1) is valid, 11-bit and
+///    allowed for a TPDO (the profile's range, else not restricted).
 CanIdSet allowedTransmitIds(const Node& node, bool lss);
 
 /// Empty when `frame` is a frame the node may send with `allowed` ids, else what is wrong:

@@ -43,6 +43,7 @@ class FuzzRules : public ::testing::Test {
 };
 
 TEST_F(FuzzRules, OwnIdsAreAllowedForeignOnesAreNot) {
+  target_.onFrame(frame(0x000, {0x01, 0x01}), 0);  // operational
   const CanIdSet allowed = allowedTransmitIds(node(), true);
   for (uint32_t id : {0x701U, 0x581U, 0x081U, 0x181U, 0x7E4U}) {
     EXPECT_TRUE(allowed.contains(id)) << std::hex << id;
@@ -51,6 +52,20 @@ TEST_F(FuzzRules, OwnIdsAreAllowedForeignOnesAreNot) {
     EXPECT_FALSE(allowed.contains(id)) << std::hex << id;
   }
   EXPECT_FALSE(allowedTransmitIds(node(), false).contains(0x7E4U));
+}
+
+TEST_F(FuzzRules, TheNmtStateLimitsTheServices) {
+  const CanIdSet preOperational = allowedTransmitIds(node(), true);
+  EXPECT_TRUE(preOperational.contains(0x581U));
+  EXPECT_TRUE(preOperational.contains(0x081U));
+  EXPECT_FALSE(preOperational.contains(0x181U));   // no PDO before operational
+  target_.onFrame(frame(0x000, {0x02, 0x01}), 0);  // stopped
+  const CanIdSet stopped = allowedTransmitIds(node(), true);
+  EXPECT_TRUE(stopped.contains(0x701U));
+  EXPECT_TRUE(stopped.contains(0x7E4U));
+  EXPECT_FALSE(stopped.contains(0x581U));
+  EXPECT_FALSE(stopped.contains(0x081U));
+  EXPECT_FALSE(stopped.contains(0x181U));
 }
 
 TEST_F(FuzzRules, ConfiguredCobIdsMoveTheAllowedIds) {
