@@ -12,6 +12,7 @@
 #include "fuzzed_device.hpp"
 #include "state_rules.hpp"
 #include "storage_rules.hpp"
+#include "watching_can.hpp"
 
 namespace costa::fuzz {
 namespace {
@@ -51,7 +52,9 @@ std::string describe(const Event& event) {
 class Session {
  public:
   Session(const std::string& device, const PowerOnOptions& options, std::string* trace)
-      : device_(createFuzzedDevice(device, can_, options)), trace_(trace) {}
+      : device_(createFuzzedDevice(device, can_, options)), trace_(trace) {
+    can_.watch(device_.get());
+  }
 
   bool known() const { return device_ != nullptr; }
   /// The input has used up its process() calls: it ends here.
@@ -226,6 +229,9 @@ class Session {
   /// Checks the frames sent since the last check against the ids allowed now, before the
   /// event, and since the transmit queue was last empty; forgets them.
   std::string checkFrames() {
+    if (!can_.problem().empty()) {
+      return can_.problem();
+    }
     if (can_.count() == 0U) {
       return "";
     }
@@ -245,7 +251,7 @@ class Session {
     return "";
   }
 
-  port::RecordingCan can_;
+  WatchingCan can_;
   std::unique_ptr<FuzzedDevice> device_;
   std::string* trace_;
   Microseconds now_ = 0;

@@ -13,7 +13,8 @@ namespace costa::fuzz {
 /// events (fuzz_events.hpp). After power-on and after every event it checks:
 ///  * every frame transmitted since the previous check (frame_rules.hpp), against the CAN-IDs
 ///    the node may use before and after the event, or at any point since its transmit queue was
-///    last empty (a frame queued while the controller refused frames leaves late);
+///    last empty (a frame queued while the controller refused frames leaves late); and no
+///    frame handed to the controller during an LSS bit timing switch or while bus-off;
 ///  * every dictionary value (dictionary_rules.hpp), and the CAN-IDs its COB-IDs configure
 ///    (frame_rules.hpp);
 ///  * the NMT, LSS and SDO state machines (state_rules.hpp);

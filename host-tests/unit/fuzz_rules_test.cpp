@@ -5,6 +5,8 @@
 
 #include <string.h>
 
+#include <memory>
+
 #include "costa/od/little_endian.hpp"
 #include "costa/port/memory/memory_storage.hpp"
 #include "costa/port/memory/recording_can.hpp"
@@ -12,8 +14,10 @@
 #include "dictionary_rules.hpp"
 #include "example_target.hpp"
 #include "frame_rules.hpp"
+#include "fuzzed_device.hpp"
 #include "state_rules.hpp"
 #include "storage_rules.hpp"
+#include "watching_can.hpp"
 
 namespace costa::fuzz {
 namespace {
@@ -159,6 +163,31 @@ TEST_F(FuzzRules, StateMachinesOfAHealthyNodeAreValid) {
   target_.onFrame(frame(0x7E5, {0x04, 0x01, 0, 0, 0, 0, 0, 0}), 0);  // LSS configuration
   EXPECT_EQ(checkStateMachines(node(), true), "");
   EXPECT_EQ(checkStateMachines(node(), false), "LSS slave active on a device without LSS");
+}
+
+TEST(FuzzWatchingCan, AFrameDuringBusOffIsNoted) {
+  WatchingCan can;
+  const std::unique_ptr<FuzzedDevice> device = createFuzzedDevice("example", can, {});
+  can.watch(device.get());
+  device->powerOn(0);
+  device->node().onControllerEvent(CanControllerEvent::kBusOff, 0);
+  EXPECT_EQ(can.problem(), "");           // the boot-up before, nothing during
+  can.tryTransmit(frame(0x701, {0x7F}));  // as a node that ignored bus-off would
+  EXPECT_EQ(can.problem(), "frame 701 [1] 7F handed to a bus-off controller");
+}
+
+TEST(FuzzWatchingCan, AFrameDuringAnLssBitTimingSwitchIsNoted) {
+  WatchingCan can;
+  const std::unique_ptr<FuzzedDevice> device = createFuzzedDevice("example", can, {});
+  can.watch(device.get());
+  device->powerOn(0);
+  device->onFrame(frame(0x7E5, {0x04, 0x01, 0, 0, 0, 0, 0, 0}), 0);  // configuration
+  device->onFrame(frame(0x7E5, {0x15, 0x64, 0, 0, 0, 0, 0, 0}), 0);  // activate, 100 ms
+  ASSERT_TRUE(device->node().lss().transmissionSuspended());
+  device->process(50000);
+  EXPECT_EQ(can.problem(), "");
+  can.tryTransmit(frame(0x701, {0x7F}));
+  EXPECT_EQ(can.problem(), "frame 701 [1] 7F sent during an LSS bit timing switch");
 }
 
 }  // namespace
