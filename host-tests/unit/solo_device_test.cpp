@@ -1,7 +1,14 @@
 // The SOLO behind its objects: the simulated drive (plausibility), the objects with side
 // effects, the device error register, and the SOLO wire profile.
+#include <memory>
+#include <string>
+
+#include "costa/port/memory/recording_can.hpp"
 #include "device_fixture.hpp"
+#include "device_registry.hpp"
 #include "sfxt.hpp"
+#include "solo_od.hpp"
+#include "solo_target.hpp"
 
 namespace costa::test {
 namespace {
@@ -284,6 +291,29 @@ TEST_F(Solo, NewDeviceAddressTakesEffectAtTheNextReset) {
     rx 605 [8] 22 01 30 00 00 00 00 00   # 0 is not an address
     tx 585 [8] 80 01 30 00 30 00 09 06
   )");
+}
+
+// The SOLO has no LSS: without a node-id (255) it could never be reached. Its composition takes
+// any node-id outside 1..127 as 1, like 0, and costa-slave refuses --node-id 255 for it.
+// (Found by fuzzing: 255 went into 0x3001, whose limits are 1..127.)
+TEST(SoloNodeId, NoNodeIdIsNotAStateASoloCanBeIn) {
+  InProcessBus bus([](CanTransmitter& can) -> std::unique_ptr<host::DeviceTarget> {
+    return std::make_unique<host::HostedTarget<solo::SoloTarget>>(&gen::solo::kNames, nullptr, can,
+                                                                  uint8_t{255}, nullptr, true);
+  });
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    rx 601 [8] 40 01 30 00 00 00 00 00
+    tx 581 [8] 42 01 30 00 01 00 00 00
+  )",
+                     bus),
+            "");
+  host::TargetOptions options;
+  options.nodeId = 255;
+  port::RecordingCan can;
+  std::string error;
+  EXPECT_EQ(host::findDevice("solo")->create(can, options, &error), nullptr);
+  EXPECT_EQ(error, "solo has no LSS: it needs a node-id (--node-id 1..127)");
 }
 
 TEST_F(Solo, PdoCobIdsAreLimitedToTheirRanges) {

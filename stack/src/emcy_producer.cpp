@@ -205,6 +205,9 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
     if (wasValid && willBeValid && (value & 0x7FFU) != (current & 0x7FFU)) {
       return AbortCode::kInvalidValue;
     }
+    if (willBeValid && cob::isRestrictedCanId(value & 0x7FFU)) {
+      return AbortCode::kInvalidValue;  // CiA 301 7.3.5: NMT, SDO, error control, LSS
+    }
   }
   return dictionary.write(*ref.entry, data, length);
 }

@@ -42,6 +42,23 @@ bool LssSlave::nonConfigured() const noexcept {
   return activeNodeId_ == cob::kLssUnconfigured && pendingNodeId_ == cob::kLssUnconfigured;
 }
 
+bool LssSlave::valid() const noexcept {
+  const auto nodeIdOk = [](uint8_t id) {
+    return cob::isValidNodeId(id) || id == cob::kLssUnconfigured;
+  };
+  if ((state_ != LssState::kWaiting && state_ != LssState::kConfiguration) ||
+      !nodeIdOk(activeNodeId_) || !nodeIdOk(pendingNodeId_) || selectiveMatched_ > 3U ||
+      identifyMatched_ > 5U || fastscanPosition_ > lss::kFastscanSerial) {
+    return false;
+  }
+  switch (switchPhase_) {
+    case SwitchPhase::kIdle: return true;
+    case SwitchPhase::kBeforeSwitch: return switchAt_ != kNever && switchAt_ <= resumeAt_;
+    case SwitchPhase::kAfterSwitch: return resumeAt_ != kNever;
+  }
+  return false;
+}
+
 bool LssSlave::onFrame(const CanFrame& frame, Microseconds now) noexcept {
   if (frame.id != cob::kLssFromMaster || frame.extended || frame.rtr || frame.dlc != 8U ||
       transmissionSuspended()) {

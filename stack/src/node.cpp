@@ -74,7 +74,7 @@ void Node::advanceClock(Microseconds now) noexcept {
 void Node::start(Microseconds now) noexcept {
   advanceClock(now);
   if (settings_.storage != nullptr) {
-    store_.reserveRecord(kLssRecord, 3);
+    store_.reserveRecord(kLssRecord, kLssRecordLength);
     storageReady_ = store_.layOut();
   }
   powerOn_ = true;
@@ -89,7 +89,7 @@ void Node::loadLssConfiguration() noexcept {
   if (!storageReady_) {
     return;
   }
-  uint8_t record[3] = {};
+  uint8_t record[kLssRecordLength] = {};
   size_t length = 0;
   const StoreResult result = store_.loadRecord(kLssRecord, record, sizeof(record), &length);
   if (result == StoreResult::kOk && length == sizeof(record)) {
@@ -273,7 +273,7 @@ LssStoreResult Node::storeLssConfiguration(uint8_t nodeId, LssBitTiming timing) 
   if (!storageReady_) {
     return LssStoreResult::kNotSupported;
   }
-  const uint8_t record[3] = {nodeId, timing.tableSelector, timing.tableIndex};
+  const uint8_t record[kLssRecordLength] = {nodeId, timing.tableSelector, timing.tableIndex};
   return store_.saveRecord(kLssRecord, record, sizeof(record)) == StoreResult::kOk
              ? LssStoreResult::kStored
              : LssStoreResult::kStorageAccessError;

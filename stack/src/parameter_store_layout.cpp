@@ -42,7 +42,14 @@ bool ParameterStore::reserveRecord(uint8_t recordId, size_t maxLength) noexcept 
 }
 
 bool ParameterStore::hasGroup(uint8_t group) const noexcept {
-  return group != od::kGroupNone && groupPayloadLength(group) != SIZE_MAX;
+  if (group == od::kGroupNone) {
+    return false;
+  }
+  if (laidOut_) {  // the regions are the groups that occur: no pass over the dictionary
+    const Region* region = nullptr;
+    return findRegion(group, &region) == StoreResult::kOk;
+  }
+  return groupPayloadLength(group) != SIZE_MAX;
 }
 
 size_t ParameterStore::groupPayloadLength(uint8_t group) const noexcept {

@@ -19,12 +19,6 @@ PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept {
   return cob;
 }
 
-bool isRestrictedCanId(uint32_t canId) noexcept {
-  return canId <= 0x07FU || (canId >= 0x101U && canId <= 0x180U) ||
-         (canId >= 0x581U && canId <= 0x5FFU) || (canId >= 0x601U && canId <= 0x67FU) ||
-         (canId >= 0x6E0U && canId <= 0x6FFU) || canId >= 0x701U;
-}
-
 size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdoMappings& fixed,
                          uint16_t communicationIndex, uint32_t* values) noexcept {
   const auto mappingIndex = static_cast<uint16_t>(communicationIndex + 0x200U);

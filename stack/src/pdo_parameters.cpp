@@ -1,4 +1,5 @@
 // Validation of writes to PDO communication and mapping parameters (CiA 301 7.5.2.35-39).
+#include "costa/cob_ids.hpp"
 #include "costa/od/little_endian.hpp"
 #include "costa/pdo_engine.hpp"
 
@@ -20,7 +21,7 @@ AbortCode checkCobIdWrite(const DeviceProfile& profile, bool receive, bool curre
   }
   if (cob.valid) {
     const CanIdRange& range = receive ? profile.rpdoCanIds : profile.tpdoCanIds;
-    if (range.restricts() ? !range.contains(cob.canId) : isRestrictedCanId(cob.canId)) {
+    if (range.restricts() ? !range.contains(cob.canId) : cob::isRestrictedCanId(cob.canId)) {
       return AbortCode::kInvalidValue;
     }
   }

@@ -35,6 +35,19 @@ void SdoBlockUpload::start(const uint8_t* request, size_t size) noexcept {
   channel_.send(response);
 }
 
+bool SdoBlockUpload::valid() const noexcept {
+  if (phase_ == Phase::kDone) {
+    return true;
+  }
+  const bool counts = blockSize_ >= 1U && blockSize_ <= kMaxBlockSize && planned_ <= blockSize_ &&
+                      sent_ <= planned_ && blockStart_ <= size_ && crcDone_ <= size_;
+  if (!counts || phase_ != Phase::kSubBlock) {
+    return counts;
+  }
+  // Every planned segment starts within the value (the only segment of an empty one at 0).
+  return planned_ >= 1U && blockStart_ + (planned_ - 1U) * kSegmentBytes <= size_;
+}
+
 AbortCode SdoBlockUpload::onRequest(const uint8_t* request) noexcept {
   const auto command = static_cast<uint8_t>(request[0] & kClientCommandMask);
   switch (phase_) {

@@ -60,6 +60,27 @@ void SdoServer::endTransfer(AbortCode reason) noexcept {
   deadline_ = kNever;
 }
 
+bool SdoServer::valid() const noexcept {
+  if (state_ == State::kIdle) {
+    return deadline_ == kNever;
+  }
+  if (deadline_ == kNever || toggle_ > 1U) {
+    return false;
+  }
+  switch (state_) {
+    case State::kDownloadSegments: return true;
+    case State::kUploadSegments: return done_ < size_ || (done_ == 0U && size_ == 0U);
+    case State::kBlockDownload:
+    case State::kBlockUpload:
+      if constexpr (features::kSdoBlockTransfer) {
+        return blockTransferValid();
+      }
+      break;  // without block transfers, the server is never in these states
+    case State::kIdle: break;
+  }
+  return false;
+}
+
 Microseconds SdoServer::nextDeadline() const noexcept {
   if (state_ == State::kIdle) {
     return kNever;

@@ -17,6 +17,13 @@ bool SdoServer::blockSegmentsReady() const noexcept {
   return state_ == State::kBlockUpload && blockUpload_.sending() && channel_.roomForBurst();
 }
 
+bool SdoServer::blockTransferValid() const noexcept {
+  if (state_ == State::kBlockDownload) {
+    return !blockDownload_.finished() && blockDownload_.valid();
+  }
+  return state_ == State::kBlockUpload && !blockUpload_.finished() && blockUpload_.valid();
+}
+
 void SdoServer::queueBlockSegments(Microseconds now) noexcept {
   afterBlockStep(blockUpload_.pump(), false, now);
 }

@@ -1,5 +1,6 @@
 #include "costa/sync_service.hpp"
 
+#include "costa/cob_ids.hpp"
 #include "costa/emcy_producer.hpp"
 #include "costa/od/little_endian.hpp"
 
@@ -62,6 +63,9 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
     const uint32_t value = loadU32(data);
     if ((value & 0x20000000U) != 0U || (value & 0x1FFFF800U) != 0U) {
       return AbortCode::kInvalidValue;  // 29-bit SYNC is not supported
+    }
+    if (cob::isRestrictedCanId(value & 0x7FFU)) {
+      return AbortCode::kInvalidValue;  // CiA 301 7.3.5: not even to consume (0x601 is SDO)
     }
     if (producer_ && (value & 0x40000000U) != 0U && (value & 0x7FFU) != canId_) {
       return AbortCode::kInvalidValue;  // stop producing before changing the CAN-ID

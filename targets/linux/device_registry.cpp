@@ -49,6 +49,10 @@ std::unique_ptr<DeviceTarget> createSolo(CanTransmitter& can, const TargetOption
   if (!openStorage(options, &storage, error)) {
     return nullptr;
   }
+  if (options.nodeId == 255) {
+    *error = "solo has no LSS: it needs a node-id (--node-id 1..127)";
+    return nullptr;
+  }
   const auto nodeId = static_cast<uint8_t>(options.nodeId < 0 ? 1 : options.nodeId);
   NvStorage* raw = storage.get();
   const bool explicitNodeId = options.nodeId >= 0;

@@ -25,9 +25,10 @@ class SoloTarget {
   static constexpr size_t kEepromBytes = 4096;
 
   /// `nodeId`: the device address (0x3001) at power-on when nothing is stored, or always when
-  /// `explicitNodeId`; 0 means 1 (manual line 861). `storage` keeps the M objects across power
-  /// cycles; without it they live in RAM (kept across NMT resets, like the SOLO's EEPROM, but
-  /// not beyond the process).
+  /// `explicitNodeId`; 0 means 1 (manual line 861), and so does any value above 127: the SOLO
+  /// has no LSS, so it cannot start without a node-id (0x3001 holds 1..127, errata D6).
+  /// `storage` keeps the M objects across power cycles; without it they live in RAM (kept
+  /// across NMT resets, like the SOLO's EEPROM, but not beyond the process).
   SoloTarget(CanTransmitter& can, uint8_t nodeId, NvStorage* storage = nullptr,
              bool explicitNodeId = false) noexcept;
 
@@ -39,7 +40,9 @@ class SoloTarget {
   SimulatedDrive& drive() noexcept { return drive_; }
 
  private:
-  static uint8_t address(uint8_t nodeId) noexcept { return nodeId == 0U ? 1U : nodeId; }
+  static uint8_t address(uint8_t nodeId) noexcept {
+    return nodeId >= 1U && nodeId <= 127U ? nodeId : 1U;
+  }
 
   static void discardStoredParameters(void* target) noexcept;
 

@@ -24,3 +24,12 @@ if(COSTA_SANITIZE)
                       -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
 endif()
+
+# Fuzzing build (tools/fuzz, clang only): every object file carries libFuzzer's coverage and the
+# sanitizers; the fuzz executables add -fsanitize=fuzzer (libFuzzer's main). The core has no
+# RTTI, so UBSan's vptr check, which needs it, is off.
+if(COSTA_FUZZ)
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize=vptr
+                      -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+endif()

@@ -18,6 +18,15 @@ inline constexpr uint32_t kLssToMaster = 0x7E4;
 
 inline constexpr uint8_t kLssUnconfigured = 0xFF;
 
+/// CiA 301 7.3.5: CAN-IDs that no configurable communication object (SYNC, EMCY, PDO) may use,
+/// because they belong to NMT, SDO, NMT error control and LSS, or are reserved: 0x000,
+/// 0x001-0x07F, 0x101-0x180, 0x581-0x5FF, 0x601-0x67F, 0x6E0-0x6FF, 0x701-0x7FF.
+inline constexpr bool isRestrictedCanId(uint32_t canId) noexcept {
+  return canId <= 0x07FU || (canId >= 0x101U && canId <= 0x180U) ||
+         (canId >= 0x581U && canId <= 0x5FFU) || (canId >= 0x601U && canId <= 0x67FU) ||
+         (canId >= 0x6E0U && canId <= 0x6FFU) || canId >= 0x701U;
+}
+
 /// Valid node-ids for a configured node.
 inline constexpr bool isValidNodeId(uint8_t id) noexcept {
   return id >= 1U && id <= 127U;

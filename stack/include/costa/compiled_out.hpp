@@ -138,6 +138,7 @@ class AbsentLssSlave {
   bool transmissionSuspended() const noexcept { return false; }
   uint8_t activeNodeId() const noexcept { return cob::kLssUnconfigured; }
   uint8_t pendingNodeId() const noexcept { return cob::kLssUnconfigured; }
+  bool valid() const noexcept { return true; }
 };
 
 /// Parameter storage compiled out: a store that is never laid out, so nothing is ever loaded

@@ -80,7 +80,8 @@ class EmcyProducer : public ObjectHook {
   Microseconds nextDeadline(NmtState state) const noexcept;
 
   /// 0x1003 (writing 0 to sub-index 0 clears the history; any other write aborts 0x06090030),
-  /// 0x1014 (the CAN-ID of a valid EMCY cannot change; 29-bit refused).
+  /// 0x1014 (the CAN-ID of a valid EMCY cannot change; 29-bit refused; a valid EMCY cannot
+  /// have a restricted CAN-ID, cob::isRestrictedCanId).
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
 

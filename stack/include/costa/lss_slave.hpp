@@ -209,6 +209,11 @@ class LssSlave {
 
   const LssIdentity& identity() const noexcept { return identity_; }
 
+  /// Consistency of the state machine (for tests and fuzzing): a defined LSS state, active and
+  /// pending node-ids of 1..127 or 0xFF, sequence positions within their sequences, and a bit
+  /// timing switch with its times set in order. O(1), changes nothing.
+  bool valid() const noexcept;
+
  private:
   enum class SwitchPhase : uint8_t { kIdle, kBeforeSwitch, kAfterSwitch };
 

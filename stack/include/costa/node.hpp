@@ -123,6 +123,8 @@ class Node {
   static constexpr uint16_t kEmcyErrorPassive = 0x8120;
   static constexpr uint16_t kEmcyBusOffRecovered = 0x8140;
   static constexpr uint8_t kLssRecord = 1;  ///< ParameterStore record of the LSS configuration
+  /// Bytes of that record: pending node-id, bit timing table selector, bit timing table index.
+  static constexpr size_t kLssRecordLength = 3;
 
   Node(const od::Definition& definition, const NodeMemory& memory, CanTransmitter& can,
        const NodeSettings& settings) noexcept;
@@ -198,6 +200,8 @@ class Node {
   const DeviceProfile& profile() const noexcept { return settings_.profile; }
   const HeartbeatConsumerService& heartbeatConsumer() const noexcept { return heartbeatConsumer_; }
   const LssSlaveService& lss() const noexcept { return lss_; }
+  /// The SDO server (read-only: whether a transfer runs, consistency checks).
+  const SdoServer& sdo() const noexcept { return sdo_; }
   /// Bit timing in use (CiA 305 table selector and index).
   LssBitTiming bitTiming() const noexcept { return bitTiming_; }
   /// The parameter store when the node has storage (laid out), else null.

@@ -50,9 +50,6 @@ struct PdoCobId {
 
 PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept;
 
-/// CiA 301 restricted CAN-IDs (7.3.5): not usable by a PDO.
-bool isRestrictedCanId(uint32_t canId) noexcept;
-
 /// Reads the mapping of the PDO whose communication parameter is at `communicationIndex`: the
 /// mapping object (index + 0x200) when the dictionary has one, else the device's static mapping.
 /// Returns the number of values written to `values` (at most PdoMap::kMaxEntries).

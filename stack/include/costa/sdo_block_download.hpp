@@ -36,6 +36,13 @@ class SdoBlockDownload {
   /// The end frame was answered: the value is written.
   bool finished() const noexcept { return phase_ == Phase::kDone; }
 
+  /// Consistency of a running transfer: a block size of 1..127 and a sequence number within
+  /// it. O(1).
+  bool valid() const noexcept {
+    return phase_ == Phase::kDone ||
+           (blockSize_ >= 1U && blockSize_ <= kMaxBlockSize && lastSequence_ <= blockSize_);
+  }
+
   static constexpr uint8_t kMaxBlockSize = 127;
 
  private:

@@ -39,6 +39,11 @@ class SdoBlockUpload {
   /// The client confirmed the end: the transfer is complete.
   bool finished() const noexcept { return phase_ == Phase::kDone; }
 
+  /// Consistency of a running transfer: the client's block size of 1..127, no more segments
+  /// planned than it and no more sent than planned, the sub-block and the CRC within the value.
+  /// O(1).
+  bool valid() const noexcept;
+
   static constexpr uint8_t kMaxBlockSize = 127;
 
  private:

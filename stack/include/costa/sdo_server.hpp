@@ -50,6 +50,11 @@ class SdoServer {
 
   bool busy() const noexcept { return state_ != State::kIdle; }
 
+  /// Consistency of the transfer state (for tests and fuzzing): idle without a deadline, or a
+  /// transfer with a deadline, a toggle of 0 or 1, an upload position within the value, and a
+  /// block transfer whose own state is valid. O(1), changes nothing.
+  bool valid() const noexcept;
+
  private:
   enum class State : uint8_t {
     kIdle,
@@ -71,6 +76,8 @@ class SdoServer {
   // Block transfers (sdo_server_block.cpp, compiled only with features::kSdoBlockTransfer).
   /// A block upload sub-block has segments to queue and the transmit queue has room for them.
   bool blockSegmentsReady() const noexcept;
+  /// valid() for a running block transfer.
+  bool blockTransferValid() const noexcept;
   void queueBlockSegments(Microseconds now) noexcept;
   void initiateBlockDownload(const uint8_t* request, Microseconds now) noexcept;
   void initiateBlockUpload(const uint8_t* request, Microseconds now) noexcept;

@@ -50,6 +50,9 @@ class SyncService : public ObjectHook {
 
   bool producer() const noexcept { return producer_; }
 
+  /// 0x1005 (29-bit and restricted CAN-IDs refused, cob::isRestrictedCanId; the CAN-ID cannot
+  /// change while producing), 0x1019 (0 or 2..240, only while the period is 0); every accepted
+  /// write reconfigures the service.
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
 

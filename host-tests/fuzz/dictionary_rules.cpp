@@ -1,0 +1,126 @@
+#include "dictionary_rules.hpp"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "costa/od/little_endian.hpp"
+
+namespace costa::fuzz {
+namespace {
+
+double asDouble(od::DataType type, uint64_t raw) {
+  if (type == od::DataType::kReal32) {
+    float value = 0.0F;
+    const auto bits = static_cast<uint32_t>(raw);
+    memcpy(&value, &bits, sizeof(value));
+    return static_cast<double>(value);
+  }
+  double value = 0.0;
+  memcpy(&value, &raw, sizeof(value));
+  return value;
+}
+
+/// The value of a numeric entry in RAM (CPU byte order), zero-extended. False for a size
+/// that is not 1, 2, 4 or 8.
+bool nativeValue(const uint8_t* address, size_t size, uint64_t* raw) {
+  switch (size) {
+    case 1: *raw = *address; return true;
+    case 2: {
+      uint16_t value = 0;
+      memcpy(&value, address, sizeof(value));
+      *raw = value;
+      return true;
+    }
+    case 4: {
+      uint32_t value = 0;
+      memcpy(&value, address, sizeof(value));
+      *raw = value;
+      return true;
+    }
+    case 8: memcpy(raw, address, sizeof(*raw)); return true;
+    default: return false;
+  }
+}
+
+/// True when `raw` (the value's bits, zero-extended) is within the entry's limits; else false
+/// with the value and the limits in `problem`.
+bool withinLimits(const od::SubEntry& entry, uint64_t raw, std::string* problem) {
+  const od::Limits& limits = *entry.limits;
+  char text[160];
+  if (od::isSigned(entry.type)) {
+    const int64_t value = signExtend(raw, entry.size);
+    const auto low = static_cast<int64_t>(limits.low);
+    const auto high = static_cast<int64_t>(limits.high);
+    if (value >= low && value <= high) {
+      return true;
+    }
+    snprintf(text, sizeof(text), "%lld outside %lld..%lld", static_cast<long long>(value),
+             static_cast<long long>(low), static_cast<long long>(high));
+  } else if (od::isReal(entry.type)) {
+    const double value = asDouble(entry.type, raw);
+    const double low = asDouble(od::DataType::kReal64, limits.low);
+    const double high = asDouble(od::DataType::kReal64, limits.high);
+    if (value >= low && value <= high) {  // false for NaN
+      return true;
+    }
+    snprintf(text, sizeof(text), "%g outside %g..%g", value, low, high);
+  } else {
+    if (raw >= limits.low && raw <= limits.high) {
+      return true;
+    }
+    snprintf(text, sizeof(text), "%llu outside %llu..%llu", static_cast<unsigned long long>(raw),
+             static_cast<unsigned long long>(limits.low),
+             static_cast<unsigned long long>(limits.high));
+  }
+  *problem = text;
+  return false;
+}
+
+/// True when the entry's value fits its definition; else false with the reason in `problem`.
+bool entryFits(const od::ObjectDictionary& dictionary, const od::SubEntry& entry,
+               std::string* problem) {
+  if ((entry.attributes & od::kInRom) != 0U || entry.type == od::DataType::kDomain) {
+    return true;
+  }
+  if (entry.type == od::DataType::kVisibleString) {
+    if (dictionary.address(entry)[entry.size] != 0U) {
+      *problem = "string without its terminating zero";
+      return false;
+    }
+    return true;
+  }
+  if (!od::isNumeric(entry.type)) {
+    return true;
+  }
+  uint64_t raw = 0;
+  if (!nativeValue(dictionary.address(entry), entry.size, &raw)) {
+    *problem = "numeric value of " + std::to_string(entry.size) + " bytes";
+    return false;
+  }
+  if (entry.type == od::DataType::kBoolean && raw > 1U) {
+    *problem = "BOOLEAN " + std::to_string(raw);
+    return false;
+  }
+  return (entry.attributes & od::kHasLimits) == 0U || withinLimits(entry, raw, problem);
+}
+
+}  // namespace
+
+std::string checkDictionaryValues(const od::ObjectDictionary& dictionary) {
+  const od::Definition& definition = dictionary.definition();
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    const od::Object& object = definition.objects[i];
+    for (size_t s = 0; s < object.subCount; ++s) {
+      std::string problem;
+      if (!entryFits(dictionary, object.subs[s], &problem)) {
+        char where[32];
+        snprintf(where, sizeof(where), "0x%04X:%02X: ", object.index,
+                 static_cast<unsigned>(object.subs[s].subIndex));
+        return std::string("dictionary value ") + where + problem;
+      }
+    }
+  }
+  return "";
+}
+
+}  // namespace costa::fuzz

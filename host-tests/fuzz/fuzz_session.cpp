@@ -1,0 +1,300 @@
+#include "fuzz_session.hpp"
+
+#include <stdint.h>
+#include <string.h>
+
+#include <memory>
+
+#include "costa/cob_ids.hpp"
+#include "costa/port/memory/recording_can.hpp"
+#include "dictionary_rules.hpp"
+#include "frame_rules.hpp"
+#include "fuzzed_device.hpp"
+#include "state_rules.hpp"
+#include "storage_rules.hpp"
+#include "watching_can.hpp"
+
+namespace costa::fuzz {
+namespace {
+
+/// Immediate deadlines (equal to now) tolerated in a row, as the in-process test bus does.
+constexpr int kImmediateRunsAllowed = 1000;
+/// process() calls an input may make; it ends early after the event that reaches them, so that
+/// every input runs in bounded time (long waits with a 1 ms timer would take minutes).
+constexpr uint64_t kProcessCallBudget = 100000;
+/// Recorded frames are checked early when this many wait (a long wait with a fast heartbeat).
+constexpr size_t kFramesBeforeCheck = port::RecordingCan::kCapacity / 2U;
+
+std::string describe(const Event& event) {
+  switch (event.kind) {
+    case EventKind::kFrame: return "rx " + describeFrame(event.frame);
+    case EventKind::kOwnSdoRequest: return "own SDO rx 6xx " + describeFrame(event.frame).substr(4);
+    case EventKind::kWait: return "wait " + std::to_string(event.duration) + " us";
+    case EventKind::kWaitForDeadline:
+      return event.duration == 0U ? "wait for the deadline" : "wait until 1 us before it";
+    case EventKind::kRefuseFrames: return "controller refuses frames";
+    case EventKind::kAcceptFrames: return "controller takes frames";
+    case EventKind::kControllerEvent: return "controller event " + std::to_string(event.code);
+    case EventKind::kPowerCycle: return "power cycle";
+    case EventKind::kStoragePowerCut:
+      return "storage power cut after " + std::to_string(event.bytes) + " bytes";
+    case EventKind::kHallReadings:
+      return "hall readings " + std::to_string(event.readings[0]) + " " +
+             std::to_string(event.readings[1]);
+    case EventKind::kHallFaults: return "hall faults " + std::to_string(event.code);
+    case EventKind::kEntryUpload: return "upload of entry " + std::to_string(event.code);
+    case EventKind::kEntryDownload: return "download to entry " + std::to_string(event.code);
+    case EventKind::kNothing: break;
+  }
+  return "nothing";
+}
+
+class Session {
+ public:
+  Session(const std::string& device, const PowerOnOptions& options, std::string* trace)
+      : device_(createFuzzedDevice(device, can_, options)), trace_(trace) {
+    can_.watch(device_.get());
+  }
+
+  bool known() const { return device_ != nullptr; }
+  /// The input has used up its process() calls: it ends here.
+  bool exhausted() const { return processCalls_ >= kProcessCallBudget; }
+
+  std::string powerOn() {
+    can_.setAccepting(true);
+    device_->powerOn(now_);
+    return runProcess();
+  }
+
+  /// Applies one event, then checks every invariant.
+  std::string apply(const Event& event) {
+    std::string problem = perform(event);
+    if (problem.empty()) {
+      problem = checkAll();
+    }
+    if (problem.empty() && !device_->storage().powered()) {
+      // The power failed during a write to the storage: the device restarts.
+      problem = powerOn();
+      if (problem.empty()) {
+        problem = checkAll();
+      }
+    }
+    return problem;
+  }
+
+  /// Every invariant, after power-on or an event.
+  std::string checkAll() {
+    std::string problem = checkFrames();
+    Node& node = device_->node();
+    if (problem.empty()) {
+      problem = checkDictionaryValues(node.dictionary());
+    }
+    if (problem.empty()) {
+      problem = checkConfiguredCanIds(node);
+    }
+    if (problem.empty()) {
+      problem = checkStateMachines(node, device_->hasLss());
+    }
+    port::MemoryStorage& storage = device_->storage();
+    if (problem.empty() && storage.modifyingCalls() != storageChanges_) {
+      storageChanges_ = storage.modifyingCalls();
+      problem = checkStoredParameters(node.dictionary().definition(), node.nodeId(), storage);
+    }
+    // A frame may wait in the node's queue while the controller refuses frames, and leave after
+    // its node-id or COB-ID changed: it may use any id allowed since the queue was last empty.
+    const CanIdSet allowedNow = allowedTransmitIds(node, device_->hasLss());
+    if (node.txPending()) {
+      allowedBefore_.merge(allowedNow);
+    } else {
+      allowedBefore_ = allowedNow;
+    }
+    return problem;
+  }
+
+  Microseconds now() const { return now_; }
+
+ private:
+  std::string perform(const Event& event) {
+    Node& node = device_->node();
+    switch (event.kind) {
+      case EventKind::kFrame: device_->onFrame(event.frame, now_); return runProcess();
+      case EventKind::kOwnSdoRequest: {
+        CanFrame frame = event.frame;
+        frame.id = cob::kSdoRxBase + node.nodeId();
+        device_->onFrame(frame, now_);
+        return runProcess();
+      }
+      case EventKind::kWait: return advanceTo(now_ + event.duration);
+      case EventKind::kWaitForDeadline:
+        if (next_ != kNever && next_ - event.duration > now_) {
+          return advanceTo(next_ - event.duration);
+        }
+        return "";
+      case EventKind::kRefuseFrames: can_.setAccepting(false); return "";
+      case EventKind::kAcceptFrames:
+        can_.setAccepting(true);
+        node.flushTx();
+        return runProcess();
+      case EventKind::kControllerEvent:
+        node.onControllerEvent(static_cast<CanControllerEvent>(event.code), now_);
+        return runProcess();
+      case EventKind::kPowerCycle: return powerOn();
+      case EventKind::kStoragePowerCut: device_->storage().cutPowerAfter(event.bytes); return "";
+      case EventKind::kHallReadings:
+        device_->setHallReadings(event.readings[0], event.readings[1]);
+        return runProcess();
+      case EventKind::kHallFaults: device_->setHallFaults(event.code); return runProcess();
+      case EventKind::kEntryUpload:
+      case EventKind::kEntryDownload: return sdoToEntry(event);
+      case EventKind::kNothing: break;
+    }
+    return "";
+  }
+
+  /// An SDO request of entry event.code (modulo the number of entries), to the own server.
+  std::string sdoToEntry(const Event& event) {
+    const od::Definition& definition = device_->node().dictionary().definition();
+    size_t entries = 0;
+    for (size_t i = 0; i < definition.objectCount; ++i) {
+      entries += definition.objects[i].subCount;
+    }
+    size_t wanted = event.code % entries;
+    const od::Object* object = definition.objects;
+    while (wanted >= object->subCount) {
+      wanted -= object->subCount;
+      ++object;
+    }
+    const od::SubEntry& entry = object->subs[wanted];
+    CanFrame frame;
+    frame.id = cob::kSdoRxBase + device_->node().nodeId();
+    frame.dlc = 8;
+    if (event.kind == EventKind::kEntryUpload) {
+      frame.data[0] = 0x40;  // initiate upload
+    } else {
+      const size_t size = entry.size >= 1U && entry.size <= 4U ? entry.size : 4U;
+      frame.data[0] = static_cast<uint8_t>(0x23U | ((4U - size) << 2U));  // expedited, sized
+      memcpy(frame.data + 4, event.frame.data, size);
+    }
+    frame.data[1] = static_cast<uint8_t>(object->index);
+    frame.data[2] = static_cast<uint8_t>(object->index >> 8U);
+    frame.data[3] = entry.subIndex;
+    if (trace_ != nullptr) {
+      *trace_ += "  = rx " + describeFrame(frame) + "\n";
+    }
+    device_->onFrame(frame, now_);
+    return runProcess();
+  }
+
+  /// Calls process() now, again while it asks for an immediate call.
+  std::string runProcess() {
+    for (int run = 0;; ++run) {
+      next_ = device_->process(now_);
+      ++processCalls_;
+      if (can_.count() > kFramesBeforeCheck) {
+        const std::string problem = checkFrames();
+        if (!problem.empty()) {
+          return problem;
+        }
+      }
+      if (next_ > now_) {
+        return "";
+      }
+      if (next_ < now_) {
+        return "process() at " + std::to_string(now_) + " us asked to run again at " +
+               std::to_string(next_) + " us, in the past";
+      }
+      if (run == kImmediateRunsAllowed) {
+        return "process() at " + std::to_string(now_) + " us asked for an immediate call " +
+               std::to_string(kImmediateRunsAllowed) + " times in a row";
+      }
+    }
+  }
+
+  /// Advances the clock to `end`, running process() at every deadline on the way.
+  std::string advanceTo(Microseconds end) {
+    while (next_ <= end) {
+      if (exhausted()) {
+        return "";  // the input ends after this event
+      }
+      now_ = next_ > now_ ? next_ : now_;
+      const std::string problem = runProcess();
+      if (!problem.empty()) {
+        return problem;
+      }
+    }
+    now_ = end;
+    return runProcess();
+  }
+
+  /// Checks the frames sent since the last check against the ids allowed now, before the
+  /// event, and since the transmit queue was last empty; forgets them.
+  std::string checkFrames() {
+    if (!can_.problem().empty()) {
+      return can_.problem();
+    }
+    if (can_.count() == 0U) {
+      return "";
+    }
+    Node& node = device_->node();
+    CanIdSet allowed = allowedTransmitIds(node, device_->hasLss());
+    allowed.merge(allowedBefore_);
+    for (size_t i = 0; i < can_.count(); ++i) {
+      if (trace_ != nullptr) {
+        *trace_ += "  tx " + describeFrame(can_.at(i)) + "\n";
+      }
+      const std::string problem = checkTransmittedFrame(can_.at(i), allowed);
+      if (!problem.empty()) {
+        return problem + " (node-id " + std::to_string(node.nodeId()) + ")";
+      }
+    }
+    can_.clear();
+    return "";
+  }
+
+  WatchingCan can_;
+  std::unique_ptr<FuzzedDevice> device_;
+  std::string* trace_;
+  Microseconds now_ = 0;
+  Microseconds next_ = kNever;
+  CanIdSet allowedBefore_;  ///< at the end of the last event, and while frames were queued
+  size_t storageChanges_ = SIZE_MAX;  // the first check always runs
+  uint64_t processCalls_ = 0;
+};
+
+}  // namespace
+
+std::string runFuzzInput(const std::string& device, const uint8_t* data, size_t size,
+                         std::string* trace) {
+  EventReader reader(data, size);
+  const PowerOnOptions options = decodeHeader(reader.header());
+  auto session = std::make_unique<Session>(device, options, trace);
+  if (!session->known()) {
+    return "unknown device '" + device + "'";
+  }
+  if (trace != nullptr) {
+    *trace += "power-on, node-id " + std::to_string(options.nodeId) +
+              (options.explicitId ? " (explicit)\n" : " (the device's own)\n");
+  }
+  std::string problem = session->powerOn();
+  if (problem.empty()) {
+    problem = session->checkAll();
+  }
+  if (!problem.empty()) {
+    return "power-on: " + problem;
+  }
+  Event event;
+  for (size_t count = 1; !session->exhausted() && reader.next(&event); ++count) {
+    if (trace != nullptr) {
+      *trace += std::to_string(session->now()) + " us: event " + std::to_string(count) + " " +
+                describe(event) + "\n";
+    }
+    problem = session->apply(event);
+    if (!problem.empty()) {
+      return "event " + std::to_string(count) + " (" + describe(event) + ") at " +
+             std::to_string(session->now()) + " us: " + problem;
+    }
+  }
+  return "";
+}
+
+}  // namespace costa::fuzz

@@ -1,0 +1,71 @@
+#include "state_rules.hpp"
+
+#include "costa/cob_ids.hpp"
+
+namespace costa::fuzz {
+namespace {
+
+bool nodeIdOrNone(uint8_t id) {
+  return cob::isValidNodeId(id) || id == cob::kLssUnconfigured;
+}
+
+std::string checkNmt(const Node& node) {
+  const NmtState state = node.state();
+  if (state != NmtState::kInitialising && state != NmtState::kPreOperational &&
+      state != NmtState::kOperational && state != NmtState::kStopped) {
+    return "NMT state " + std::to_string(static_cast<int>(state));
+  }
+  if (!nodeIdOrNone(node.nodeId())) {
+    return "NMT: node-id " + std::to_string(node.nodeId());
+  }
+  if ((state == NmtState::kInitialising) != (node.nodeId() == cob::kLssUnconfigured)) {
+    return std::string("NMT: ") + describe(state) + " with node-id " +
+           std::to_string(node.nodeId());
+  }
+  if (!nodeIdOrNone(node.pendingNodeId())) {
+    return "NMT: node-id for the next reset communication " + std::to_string(node.pendingNodeId());
+  }
+  return "";
+}
+
+std::string checkLss(const Node& node, bool lss) {
+  const LssSlave& slave = node.lss();
+  if (!slave.valid()) {
+    return "LSS slave state not valid";
+  }
+  if (slave.activeNodeId() != node.nodeId()) {
+    return "LSS active node-id " + std::to_string(slave.activeNodeId()) +
+           " but the node runs with " + std::to_string(node.nodeId());
+  }
+  if (!lss && (slave.state() != LssState::kWaiting || slave.transmissionSuspended())) {
+    return "LSS slave active on a device without LSS";
+  }
+  return "";
+}
+
+std::string checkSdo(const Node& node) {
+  const SdoServer& sdo = node.sdo();
+  if (!sdo.valid()) {
+    return "SDO server state not valid";
+  }
+  if (sdo.busy() && node.state() != NmtState::kPreOperational &&
+      node.state() != NmtState::kOperational) {
+    return std::string("SDO transfer running in ") + describe(node.state());
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string checkStateMachines(const Node& node, bool lss) {
+  std::string problem = checkNmt(node);
+  if (problem.empty()) {
+    problem = checkLss(node, lss);
+  }
+  if (problem.empty()) {
+    problem = checkSdo(node);
+  }
+  return problem;
+}
+
+}  // namespace costa::fuzz

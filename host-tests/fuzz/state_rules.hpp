@@ -1,0 +1,20 @@
+// The node's state machines are in states they can be in.
+#pragma once
+
+#include <string>
+
+#include "costa/node.hpp"
+
+namespace costa::fuzz {
+
+/// Empty when, after start():
+///  * NMT: the state is one of the four CiA 301 states, the node-id is 1..127 or 0xFF (none),
+///    the node is initialising exactly when it has no node-id, and the node-id to apply at the
+///    next reset communication is 1..127 or 0xFF;
+///  * LSS: LssSlave::valid(), its active node-id is the node's, and a device without LSS has
+///    left it in waiting state with no bit timing switch;
+///  * SDO: SdoServer::valid(), and a transfer runs only in pre-operational or operational.
+/// Else what is wrong.
+std::string checkStateMachines(const Node& node, bool lss);
+
+}  // namespace costa::fuzz
