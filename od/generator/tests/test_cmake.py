@@ -63,6 +63,29 @@ class CMakeTest(unittest.TestCase):
             second = self._run([cmake, "--build", build])
             self.assertNotIn("Generating object dictionary", second)
 
+    def test_an_eds_error_fails_the_build_with_file_and_line(self):
+        cmake = shutil.which("cmake")
+        if cmake is None or shutil.which("c++") is None:
+            self.skipTest("cmake or c++ not found")
+        with open(EXAMPLE_EDS, encoding="utf-8") as stream:
+            lines = stream.read().split("\n")
+        # The first DataType line of the EDS names a type that does not exist.
+        bad = next(i for i, line in enumerate(lines) if line.startswith("DataType="))
+        lines[bad] = "DataType=0x0099"
+        with tempfile.TemporaryDirectory() as source:
+            with open(os.path.join(source, "CMakeLists.txt"), "w", encoding="utf-8") as stream:
+                stream.write(PROJECT.format(module=CMAKE_MODULE, include=INCLUDE_DIR))
+            with open(os.path.join(source, "main.cpp"), "w", encoding="utf-8") as stream:
+                stream.write(MAIN)
+            with open(os.path.join(source, "example.eds"), "w", encoding="utf-8") as stream:
+                stream.write("\n".join(lines))
+            build = os.path.join(source, "build")
+            self._run([cmake, "-S", source, "-B", build])
+            done = subprocess.run([cmake, "--build", build], capture_output=True, text=True)
+            self.assertNotEqual(done.returncode, 0, done.stdout + done.stderr)
+            self.assertIn(f"example.eds:{bad + 1}", done.stdout + done.stderr)
+            self.assertFalse(os.path.exists(os.path.join(build, "app")))
+
     def _run(self, command):
         done = subprocess.run(command, capture_output=True, text=True)
         self.assertEqual(done.returncode, 0, f"{' '.join(command)}\n{done.stdout}{done.stderr}")
