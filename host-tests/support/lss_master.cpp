@@ -25,9 +25,8 @@ bool LssMaster::probe(uint32_t id, uint8_t bitChecked, uint8_t sub, uint8_t next
                            next};
   CanFrame answer;
   const bool answered = request(data, &answer) && answer.data[0] == 0x4F;
-  // Several slaves may answer at once on a real bus: drain the rest.
-  CanFrame more;
-  while (answered && link_.receive(&more)) {
+  if (answered) {
+    link_.discardAnswers();  // several slaves may answer at once on a real bus
   }
   return answered;
 }

@@ -15,6 +15,12 @@ class LssMasterLink {
   virtual void send(const CanFrame& frame) = 0;
   /// The next LSS response (0x7E4); false when none arrives in time.
   virtual bool receive(CanFrame* frame) = 0;
+  /// Drops the further answers to the last request (several slaves may answer at once).
+  virtual void discardAnswers() {
+    CanFrame more;
+    while (receive(&more)) {
+    }
+  }
 };
 
 class LssMaster {
