@@ -28,8 +28,8 @@ class GraPowerCycle : public ::testing::Test {
     bus_.reset();
     bus_ = std::make_unique<InProcessBus>([this](CanTransmitter& can) {
       return std::make_unique<host::HostedTarget<GraTarget>>(
-          &gen::gra::kNames, nullptr, gen::gra::kDefinition, can, gefran::kFactoryNodeId,
-          &eeprom_, false);
+          &gen::gra::kNames, nullptr, gen::gra::kDefinition, can, gefran::kFactoryNodeId, &eeprom_,
+          false);
     });
   }
   std::string play(const std::string& text) { return playText(text, *bus_); }
