@@ -184,7 +184,7 @@ TEST(GefranErrors, AProgramChecksumErrorFromTheSensorsPortGivesItsEmcy) {
   port::MemoryStorageOf<4096> storage;
   port::RecordingCan can;
   gefran::GefranTarget<gen::gra::Values, gen::gra::Capacity> target(gen::gra::kDefinition, can,
-                                                                     0x7F, &storage, false);
+                                                                    0x7F, &storage, false);
   target.start(0);
   target.sensors().setFault(gefran::kProgramChecksum, true);
   target.process(0);
