@@ -19,8 +19,10 @@ SocketBus::SocketBus(const std::string& device, int nodeId, const std::vector<st
   static std::atomic<int> counter{0};
   controlPath_ = "/tmp/costa-control-" + std::to_string(::getpid()) + "-" +
                  std::to_string(counter.fetch_add(1));
-  std::vector<std::string> arguments = {
-      "--iface", testInterface(), "--node-id", std::to_string(nodeId), "--control", controlPath_};
+  std::vector<std::string> arguments = {"--iface", testInterface(), "--control", controlPath_};
+  if (nodeId >= 0) {
+    arguments.insert(arguments.end(), {"--node-id", std::to_string(nodeId)});
+  }
   arguments.insert(arguments.end(), extra.begin(), extra.end());
   arguments.push_back(device);
   slave_ = std::make_unique<SlaveProcess>(arguments);

@@ -15,7 +15,8 @@ namespace costa::test {
 class SocketBus : public TranscriptBus {
  public:
   /// Opens the test socket first (so the boot-up frame is seen), then starts costa-slave with
-  /// `--iface <testInterface()> --node-id <nodeId> <extra...> <device>`.
+  /// `--iface <testInterface()> --node-id <nodeId> <extra...> <device>`; without `--node-id`
+  /// when `nodeId` is negative (the device's own or stored node-id).
   SocketBus(const std::string& device, int nodeId, const std::vector<std::string>& extra = {});
 
   /// Empty when the bus is usable, else why not.

@@ -179,5 +179,21 @@ TEST(GefranStorage, ADamagedLssRecordIsReportedAsALssParameterChecksumError) {
   EXPECT_TRUE(emcy);
 }
 
+TEST(GefranErrors, AProgramChecksumErrorFromTheSensorsPortGivesItsEmcy) {
+  // E56: the simulated chips never report 0x10; firmware would, through HallSensors::faults().
+  port::MemoryStorageOf<4096> storage;
+  port::RecordingCan can;
+  gefran::GefranTarget<gen::gra::Values, gen::gra::Capacity> target(gen::gra::kDefinition, can,
+                                                                    0x7F, &storage, false);
+  target.start(0);
+  target.sensors().setFault(gefran::kProgramChecksum, true);
+  target.process(0);
+  ASSERT_EQ(can.count(), 3U);
+  EXPECT_EQ(host::formatFrame(can.at(0)), "77F [1] 00");
+  EXPECT_EQ(host::formatFrame(can.at(1)), "1FF [8] 00 00 00 00 FF FF FF 00");
+  EXPECT_EQ(host::formatFrame(can.at(2)), "0FF [8] 00 10 00 10 00 FF FF FF");
+  EXPECT_EQ(target.node().dictionary().readUnsigned(0x4001, 0, 0), 0x10U);
+}
+
 }  // namespace
 }  // namespace costa::test

@@ -10,8 +10,8 @@ namespace costa::gefran {
 enum SensorFault : uint8_t {
   kChip1Error = 0x01,
   kChip2Error = 0x02,
-  kAngleMismatch = 0x04,  ///< never set: 0x2103 is not implemented (E28)
-  kProgramChecksum = 0x10,
+  kAngleMismatch = 0x04,    ///< never set: 0x2103 is not implemented (E28)
+  kProgramChecksum = 0x10,  ///< from firmware checking its flash; never simulated (E56)
   kLssParameterChecksum = 0x40,
   kMagneticField = 0x80,  ///< reported with both chip bits: 0x83 (E15)
 };
