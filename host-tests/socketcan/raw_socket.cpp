@@ -1,6 +1,7 @@
 #include "raw_socket.hpp"
 
 #include <linux/can.h>
+#include <linux/can/error.h>
 #include <linux/can/raw.h>
 #include <net/if.h>
 #include <poll.h>
@@ -49,6 +50,14 @@ bool RawCanSocket::send(const CanFrame& frame) {
   }
   raw.len = frame.dlc;
   std::memcpy(raw.data, frame.data, 8);
+  return ::write(fd_, &raw, sizeof(raw)) == static_cast<ssize_t>(sizeof(raw));
+}
+
+bool RawCanSocket::sendErrorFrame(uint32_t errorClass, uint8_t controller) {
+  can_frame raw{};
+  raw.can_id = CAN_ERR_FLAG | (errorClass & CAN_ERR_MASK);
+  raw.len = CAN_ERR_DLC;
+  raw.data[1] = controller;
   return ::write(fd_, &raw, sizeof(raw)) == static_cast<ssize_t>(sizeof(raw));
 }
 

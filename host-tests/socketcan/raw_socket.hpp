@@ -1,6 +1,8 @@
 // A test client's own raw SocketCAN socket.
 #pragma once
 
+#include <stdint.h>
+
 #include <string>
 
 #include "costa/port/can_frame.hpp"
@@ -17,6 +19,10 @@ class RawCanSocket {
   /// Opens and binds; returns false with a reason.
   bool open(const std::string& interfaceName, std::string* error);
   bool send(const CanFrame& frame);
+  /// Sends an error frame as a driver reports one: CAN_ERR_FLAG | `errorClass`, 8 bytes with
+  /// `controller` (CAN_ERR_CRTL_*) in data[1]. Other sockets on the interface that asked for
+  /// error frames receive it.
+  bool sendErrorFrame(uint32_t errorClass, uint8_t controller);
   /// Waits up to `timeoutMs` for a frame.
   bool receive(CanFrame* frame, int timeoutMs);
 

@@ -30,6 +30,10 @@ class SocketBus : public TranscriptBus {
   std::string simulate(const std::string& command) override;
 
   SlaveProcess& slave() { return *slave_; }
+  /// Sends an error frame to costa-slave (RawCanSocket::sendErrorFrame).
+  bool sendErrorFrame(uint32_t errorClass, uint8_t controller) {
+    return socket_.sendErrorFrame(errorClass, controller);
+  }
 
  private:
   RawCanSocket socket_;

@@ -68,6 +68,8 @@ TEST_F(Emcy, HistoryKeepsTheNewestAndIsClearedByWritingZero) {
     tx 581 [8] 4F 03 10 00 00 00 00 00
   )");
   // Frames 9 and 10 did not fit the EMCY queue (8 deep) and are counted as lost.
+  EXPECT_EQ(bus_.node().emcyLost(), 2U);
+  EXPECT_EQ(bus_.node().txDropped(), 0U);  // lost before the transmit queue, not in it
   EXPECT_EQ(value(0x1003, 1), 0U);
 }
 

@@ -130,6 +130,21 @@ TEST_F(Gra, ResolutionAndZeroPointChecks) {
   )");
 }
 
+TEST_F(Gra, TheStaticTpdoMappingIsReadOnly_06010002) {
+  EXPECT_TRANSCRIPT(R"(
+    tx 77F [1] 00
+    tx 1FF [8] 00 00 00 00 FF FF FF 00
+    rx 000 [2] 80 7F                       # pre-operational, where CiA 301 allows remapping
+    rx 67F [8] 2F 00 1A 00 00 00 00 00     # 0x1A00:00 = 0: const (manual line 487)
+    tx 5FF [8] 80 00 1A 00 02 00 01 06     # 0x06010002 attempt to write a read-only object
+    rx 67F [8] 23 00 1A 01 08 01 10 21     # 0x1A00:01, even with its own value (line 488)
+    tx 5FF [8] 80 00 1A 01 02 00 01 06
+    rx 67F [8] 40 00 1A 00 00 00 00 00     # unchanged
+    tx 5FF [8] 4F 00 1A 00 08 00 00 00
+  )");
+  EXPECT_EQ(value(0x1A00, 1), 0x21100108U);
+}
+
 TEST_F(Gra, LssParametersAreTheNodesPendingConfiguration) {
   EXPECT_TRANSCRIPT(R"(
     tx 77F [1] 00

@@ -5,6 +5,8 @@
 #include "costa/port/memory/memory_can_bus.hpp"
 #include "example_target.hpp"
 #include "frame_text.hpp"
+#include "gefran_target.hpp"
+#include "gra_od.hpp"
 
 namespace costa::test {
 namespace {
@@ -72,6 +74,63 @@ TEST(MultiNode, NodesShareABusAndAnswerOnlyForThemselves) {
     nodeB.process(11000);
   }
   EXPECT_EQ(next(client), "705 [1] 05");
+  EXPECT_EQ(next(client), "nothing");
+}
+
+TEST(MultiNode, NodesWithDifferentDictionariesAnswerEachWithItsOwn) {
+  port::MemoryCanBus bus;
+  port::MemoryCanEndpoint client;
+  port::MemoryCanEndpoint examplePort;
+  port::MemoryCanEndpoint sensorPort;
+  bus.attach(client);
+  bus.attach(examplePort);
+  bus.attach(sensorPort);
+  example::ExampleTarget example(examplePort, 5);
+  gefran::GefranTarget<gen::gra::Values, gen::gra::Capacity> sensor(gen::gra::kDefinition,
+                                                                    sensorPort, 9, nullptr, true);
+  const auto deliver = [&](Microseconds now) {
+    NoAllocationScope scope;
+    CanFrame received;
+    while (examplePort.receive(&received)) {
+      example.onFrame(received, now);
+    }
+    while (sensorPort.receive(&received)) {
+      sensor.onFrame(received, now);
+    }
+  };
+  {
+    NoAllocationScope scope;
+    example.start(0);
+    sensor.start(0);
+  }
+  EXPECT_EQ(next(client), "705 [1] 00");
+  EXPECT_EQ(next(client), "709 [1] 00");
+  EXPECT_EQ(next(client), "189 [8] 00 00 00 00 FF FF FF 00");  // the sensor starts by itself
+  deliver(0);
+
+  // The same request to both: each answers from its own dictionary.
+  client.tryTransmit(frame("605 [8] 40 08 10 00 00 00 00 00"));  // 0x1008 device name
+  client.tryTransmit(frame("609 [8] 40 08 10 00 00 00 00 00"));
+  deliver(1000);
+  EXPECT_EQ(next(client), "585 [8] 41 08 10 00 0D 00 00 00");  // 13 bytes, segmented
+  EXPECT_EQ(next(client), "589 [8] 47 08 10 00 47 52 41 00");  // "GRA", expedited
+  client.tryTransmit(frame("605 [8] 60 00 00 00 00 00 00 00"));
+  deliver(1000);
+  EXPECT_EQ(next(client), "585 [8] 00 43 6F 73 74 61 20 65");  // "Costa e"
+  client.tryTransmit(frame("605 [8] 70 00 00 00 00 00 00 00"));
+  deliver(1000);
+  EXPECT_EQ(next(client), "585 [8] 13 78 61 6D 70 6C 65 00");    // "xample"
+  client.tryTransmit(frame("605 [8] 40 18 10 01 00 00 00 00"));  // 0x1018:01 vendor-ID
+  client.tryTransmit(frame("609 [8] 40 18 10 01 00 00 00 00"));
+  deliver(2000);
+  EXPECT_EQ(next(client), "585 [8] 43 18 10 01 05 0C 00 00");
+  EXPECT_EQ(next(client), "589 [8] 43 18 10 01 93 00 00 00");
+  // An object only one of them has.
+  client.tryTransmit(frame("605 [8] 40 10 21 00 00 00 00 00"));
+  client.tryTransmit(frame("609 [8] 40 10 21 00 00 00 00 00"));
+  deliver(3000);
+  EXPECT_EQ(next(client), "585 [8] 80 10 21 00 00 00 02 06");  // 0x06020000 no such object
+  EXPECT_EQ(next(client), "589 [8] 4F 10 21 00 07 00 00 00");
   EXPECT_EQ(next(client), "nothing");
 }
 

@@ -31,6 +31,20 @@ TEST_F(PdoConfig, CobIdRules_06090030) {
   )");
 }
 
+TEST_F(PdoConfig, RpdoCobIdWith29BitFrameIsRefused_06090030) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 00 14 01 01 02 00 20   # bit 29 on the valid RPDO's own CAN-ID
+    tx 581 [8] 80 00 14 01 30 00 09 06
+    rx 601 [8] 23 00 14 01 01 02 00 A0   # bit 29 while invalid: still no 29-bit CAN-ID
+    tx 581 [8] 80 00 14 01 30 00 09 06
+    rx 601 [8] 40 00 14 01 00 00 00 00   # unchanged
+    tx 581 [8] 43 00 14 01 01 02 00 00
+    rx 000 [2] 01 01
+    rx 201 [5] 2A 00 00 00 00            # the RPDO still receives on 0x201 (11-bit)
+  )");
+  EXPECT_EQ(value(0x2000, 0), 42U);
+}
+
 TEST_F(PdoConfig, TransmissionTypeRules_06090030) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 00 18 02 F1 00 00 00   # 241..251 reserved for TPDOs

@@ -15,6 +15,7 @@
 #include "device_registry.hpp"
 #include "frame_text.hpp"
 #include "frame_trace.hpp"
+#include "slave_counters.hpp"
 
 namespace costa::host {
 namespace {
@@ -41,21 +42,48 @@ class Tracer {
     if (!enabled_) {
       return;
     }
-    const uint64_t elapsed = clock_.nowMicroseconds() - epoch_;
     const std::string meaning =
         decoder_ ? decoder_->describe(frame, target_->node().nodeId()) : std::string();
-    std::printf("%5llu.%06llu %s %-32s %s\n", static_cast<unsigned long long>(elapsed / 1000000U),
-                static_cast<unsigned long long>(elapsed % 1000000U), direction,
-                formatFrame(frame).c_str(), meaning.c_str());
-    std::fflush(stdout);
+    print(direction, formatFrame(frame), meaning);
+  }
+
+  /// An error frame of the driver and the controller events it reported.
+  void errorFrame(const port::SocketCanEvents& events) {
+    if (!enabled_) {
+      return;
+    }
+    std::string meaning;
+    for (const CanControllerEvent event : events) {
+      meaning += meaning.empty() ? "controller: " : ", ";
+      meaning += controllerEventName(event);
+    }
+    print("rx", "error frame", meaning);
+  }
+
+  /// The counters of losses, when they changed since the last call.
+  void counters(const SlaveCounters& now) {
+    if (!enabled_ || now == shown_) {
+      return;
+    }
+    shown_ = now;
+    print("--", "counters", describeCounters(now));
   }
 
  private:
+  void print(const char* direction, const std::string& what, const std::string& meaning) {
+    const uint64_t elapsed = clock_.nowMicroseconds() - epoch_;
+    std::printf("%5llu.%06llu %s %-32s %s\n", static_cast<unsigned long long>(elapsed / 1000000U),
+                static_cast<unsigned long long>(elapsed % 1000000U), direction, what.c_str(),
+                meaning.c_str());
+    std::fflush(stdout);
+  }
+
   bool enabled_;
   port::LinuxMonotonicClock& clock_;
   uint64_t epoch_;
   DeviceTarget* target_ = nullptr;
   std::unique_ptr<FrameTracer> decoder_;
+  SlaveCounters shown_;
 };
 
 /// The node's transmitter: the socket, with every accepted frame traced.
@@ -106,16 +134,23 @@ sigset_t catchStopSignals() {
   return waiting;
 }
 
-/// Passes every frame the socket holds to the target.
+/// Passes every frame the socket holds to the target, and the controller events of error
+/// frames to its node.
 void receiveFrames(port::SocketCanPort& socket, Tracer& tracer, DeviceTarget& target,
                    port::LinuxMonotonicClock& clock) {
   CanFrame frame;
+  port::SocketCanEvents events;
   for (;;) {
-    const auto received = socket.receive(&frame);
+    const auto received = socket.receive(&frame, &events);
     if (received == port::SocketCanPort::Received::kFrame) {
       tracer.line("rx", frame);
       target.onFrame(frame, clock.nowMicroseconds());
-    } else if (received != port::SocketCanPort::Received::kErrorFrame) {
+    } else if (received == port::SocketCanPort::Received::kErrorFrame) {
+      tracer.errorFrame(events);
+      for (const CanControllerEvent event : events) {
+        target.node().onControllerEvent(event, clock.nowMicroseconds());
+      }
+    } else {
       break;
     }
   }
@@ -186,8 +221,10 @@ int runSlave(const SlaveOptions& options) {
     if (target->node().txPending()) {
       target->node().flushTx();
     }
+    tracer.counters(countersOf(target->node(), socket.counters()));
   }
-  std::fprintf(stderr, "costa-slave: stopped\n");
+  std::fprintf(stderr, "costa-slave: stopped: %s\n",
+               describeCounters(countersOf(target->node(), socket.counters())).c_str());
   return 0;
 }
 

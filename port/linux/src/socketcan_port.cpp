@@ -46,7 +46,9 @@ bool SocketCanPort::open(const std::string& interfaceName, std::string* error) {
     ::close(fd);
     return false;
   }
-  const can_err_mask_t errorMask = CAN_ERR_MASK;
+  // The controller's state changes only: protocol and acknowledgement errors are the
+  // controller's business (it retransmits) and would flood the loop on a broken bus.
+  const can_err_mask_t errorMask = CAN_ERR_CRTL | CAN_ERR_BUSOFF | CAN_ERR_RESTARTED;
   setsockopt(fd, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &errorMask, sizeof(errorMask));
   sockaddr_can address{};
   address.can_family = AF_CAN;
@@ -60,6 +62,7 @@ bool SocketCanPort::open(const std::string& interfaceName, std::string* error) {
     return false;
   }
   fd_ = fd;
+  errorState_ = SocketCanErrorState{};
   return true;
 }
 
@@ -81,7 +84,7 @@ bool SocketCanPort::tryTransmit(const CanFrame& frame) noexcept {
   return true;
 }
 
-SocketCanPort::Received SocketCanPort::receive(CanFrame* frame, uint32_t* errorClass) noexcept {
+SocketCanPort::Received SocketCanPort::receive(CanFrame* frame, SocketCanEvents* events) noexcept {
   can_frame raw{};
   const ssize_t got = ::read(fd_, &raw, sizeof(raw));
   if (got < 0) {
@@ -93,8 +96,9 @@ SocketCanPort::Received SocketCanPort::receive(CanFrame* frame, uint32_t* errorC
   }
   if ((raw.can_id & CAN_ERR_FLAG) != 0U) {
     ++counters_.errorFrames;
-    if (errorClass != nullptr) {
-      *errorClass = raw.can_id & CAN_ERR_MASK;
+    const SocketCanEvents reported = controllerEventsOf(raw, &errorState_);
+    if (events != nullptr) {
+      *events = reported;
     }
     return Received::kErrorFrame;
   }

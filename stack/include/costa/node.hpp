@@ -153,6 +153,9 @@ class Node {
   bool txPending() const noexcept { return !tx_.empty(); }
   uint32_t txDropped() const noexcept { return tx_.dropped(); }
   uint32_t txExpired() const noexcept { return tx_.expired(); }
+  /// EMCY frames dropped because the EMCY queue (NodeMemory::emcyQueueCapacity frames waiting
+  /// for their inhibit time) was full, since construction.
+  uint32_t emcyLost() const noexcept { return emcy_.lost(); }
 
   /// Local NMT control (for example an automatic start after power-on).
   void enterState(NmtState state) noexcept;

@@ -6,11 +6,13 @@
 #include <string>
 
 #include "costa/port/can_port.hpp"
+#include "costa/port/linux/socketcan_error_frames.hpp"
 
 namespace costa::port {
 
 /// Owns one non-blocking CAN_RAW socket bound to an interface. Receives data frames, RTR frames
-/// and error frames (counted, and reported as controller status); transmits without blocking.
+/// and the error frames of controller state changes (CAN_ERR_CRTL, CAN_ERR_BUSOFF,
+/// CAN_ERR_RESTARTED: counted, and reported as controller events); transmits without blocking.
 class SocketCanPort final : public CanTransmitter {
  public:
   enum class Received { kFrame, kErrorFrame, kNothing, kFailed };
@@ -35,15 +37,16 @@ class SocketCanPort final : public CanTransmitter {
 
   bool tryTransmit(const CanFrame& frame) noexcept override;
 
-  /// Reads one frame if one is waiting. Error frames are counted and returned as kErrorFrame
-  /// with their CAN_ERR_* class in `errorClass`.
-  Received receive(CanFrame* frame, uint32_t* errorClass = nullptr) noexcept;
+  /// Reads one frame if one is waiting. Error frames are counted and returned as kErrorFrame,
+  /// with the controller events they report (controllerEventsOf) in `events`.
+  Received receive(CanFrame* frame, SocketCanEvents* events = nullptr) noexcept;
 
   const Counters& counters() const noexcept { return counters_; }
 
  private:
   int fd_ = -1;
   Counters counters_;
+  SocketCanErrorState errorState_;
 };
 
 }  // namespace costa::port
