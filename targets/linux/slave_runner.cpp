@@ -41,16 +41,36 @@ class Tracer {
     if (!enabled_) {
       return;
     }
-    const uint64_t elapsed = clock_.nowMicroseconds() - epoch_;
     const std::string meaning =
         decoder_ ? decoder_->describe(frame, target_->node().nodeId()) : std::string();
-    std::printf("%5llu.%06llu %s %-32s %s\n", static_cast<unsigned long long>(elapsed / 1000000U),
-                static_cast<unsigned long long>(elapsed % 1000000U), direction,
-                formatFrame(frame).c_str(), meaning.c_str());
+    std::printf("%s %s %-32s %s\n", stamp().c_str(), direction, formatFrame(frame).c_str(),
+                meaning.c_str());
+    std::fflush(stdout);
+  }
+
+  /// "bit rate now 500 kbit/s": the node re-timed the port.
+  void bitRate(uint32_t bitsPerSecond) {
+    if (!enabled_) {
+      return;
+    }
+    if (bitsPerSecond % 1000U == 0U) {
+      std::printf("%s bit rate now %u kbit/s\n", stamp().c_str(), bitsPerSecond / 1000U);
+    } else {
+      std::printf("%s bit rate now %u bit/s\n", stamp().c_str(), bitsPerSecond);
+    }
     std::fflush(stdout);
   }
 
  private:
+  std::string stamp() const {
+    const uint64_t elapsed = clock_.nowMicroseconds() - epoch_;
+    char text[32];
+    std::snprintf(text, sizeof(text), "%5llu.%06llu",
+                  static_cast<unsigned long long>(elapsed / 1000000U),
+                  static_cast<unsigned long long>(elapsed % 1000000U));
+    return text;
+  }
+
   bool enabled_;
   port::LinuxMonotonicClock& clock_;
   uint64_t epoch_;
@@ -67,6 +87,24 @@ class TracedSocket final : public CanTransmitter {
       return false;
     }
     tracer_.line("tx", frame);
+    return true;
+  }
+
+ private:
+  port::SocketCanPort& socket_;
+  Tracer& tracer_;
+};
+
+/// The node's bit rate control: the socket's (which records the rate; the interface's own rate
+/// is the system's), with every switch traced.
+class TracedBitRate final : public CanBitRateControl {
+ public:
+  TracedBitRate(port::SocketCanPort& socket, Tracer& tracer) : socket_(socket), tracer_(tracer) {}
+  bool setBitRate(uint32_t bitsPerSecond) noexcept override {
+    if (!socket_.setBitRate(bitsPerSecond)) {
+      return false;
+    }
+    tracer_.bitRate(bitsPerSecond);
     return true;
   }
 
@@ -133,9 +171,11 @@ int runSlave(const SlaveOptions& options) {
   port::LinuxMonotonicClock clock;
   Tracer tracer(options.trace, clock);
   TracedSocket transmitter(socket, tracer);
+  TracedBitRate bitRate(socket, tracer);
   TargetOptions targetOptions;
   targetOptions.nodeId = options.nodeId;
   targetOptions.storagePath = options.storagePath;
+  targetOptions.bitRate = &bitRate;
   std::unique_ptr<DeviceTarget> target =
       findDevice(options.device)->create(transmitter, targetOptions, &error);
   if (!target) {
