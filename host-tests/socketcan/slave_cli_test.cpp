@@ -56,6 +56,31 @@ TEST(SlaveProcessOnVcan, TraceShowsEveryFrameWithItsMeaning) {
   EXPECT_NE(output.find("SDO download 0x1017:00 = 1000"), std::string::npos) << output;
 }
 
+TEST(SlaveProcessOnVcan, TraceReportsTheBitRateTheNodeSwitchedTo) {
+  SocketBus bus("gra", 3, {"--trace"});
+  ASSERT_EQ(bus.error(), "");
+  EXPECT_EQ(playText(R"(
+    ignore 183
+    tx 703 [1] 00
+    rx 603 [8] 2B 99 59 01 F4 01 00 00     # 0x5999:01 = 500 kbit/s
+    tx 583 [8] 60 99 59 01 00 00 00 00
+    rx 603 [8] 23 99 59 03 73 61 76 65     # "save"
+    tx 583 [8] 60 99 59 03 00 00 00 00
+    rx 000 [2] 81 03                       # reset node: the saved rate applies
+    tx 703 [1] 00
+  )",
+                     bus, kSocketReceiveTimeoutMs),
+            "");
+  EXPECT_EQ(bus.slave().stop(SIGTERM), 0);
+  const std::string output = bus.slave().output();
+  const size_t reset = output.find("rx 000 [2] 81 03");
+  const size_t rate = output.find("bit rate now 500 kbit/s");
+  ASSERT_NE(reset, std::string::npos) << output;
+  ASSERT_NE(rate, std::string::npos) << output;
+  EXPECT_LT(reset, rate) << output;
+  EXPECT_EQ(output.find("bit rate now", rate + 1), std::string::npos) << output;  // once
+}
+
 TEST(SlaveProcessOnVcan, SoloSpeedReferenceBecomesARampingSpeedFeedbackTpdo) {
   SocketBus bus("solo", 1, {"--trace"});
   ASSERT_EQ(bus.error(), "");

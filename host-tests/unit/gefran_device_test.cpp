@@ -1,5 +1,6 @@
 // The GRA/GRN behind their objects: the angle model, the automatic start, faults with their
-// EMCY and error behaviour, parameter checks, the LSS parameters, stored-parameter errors.
+// EMCY and error behaviour, parameter checks, the LSS parameters and the bit rate they set,
+// stored-parameter errors.
 #include <gtest/gtest.h>
 
 #include "angle_model.hpp"
@@ -9,6 +10,7 @@
 #include "frame_text.hpp"
 #include "gefran_target.hpp"
 #include "gra_od.hpp"
+#include "recording_bit_rate.hpp"
 
 namespace costa::test {
 namespace {
@@ -166,6 +168,42 @@ TEST_F(Gra, LssParametersAreTheNodesPendingConfiguration) {
     tx 5FF [8] 4B 99 59 01 FA 00 00 00
   )");
   EXPECT_EQ(bus_.node().bitTiming().tableIndex, 3U);
+}
+
+// Manual example 1 (host-tests/transcripts/gefran/example-1-baud-rate.transcript): 500 kbit/s
+// written to 0x5999:01 and saved reaches the CAN controller at the reset, before the boot-up.
+TEST(GefranBitRate, Example1TheSavedBitRateReachesTheControllerAtTheReset) {
+  RecordingBitRate rate;
+  host::TargetOptions options;
+  options.bitRate = &rate;
+  InProcessBus bus("gra", 3, options);
+  rate.framesSent = [&bus] { return bus.can().count(); };
+  EXPECT_EQ(playText(R"(
+    ignore 183
+    tx 703 [1] 00                          # boot-up at 250 kbit/s
+    tx 183 [8] 00 00 00 00 FF FF FF 00
+    rx 603 [8] 2B 99 59 01 F4 01 00 00     # 0x5999:01 = 500
+    tx 583 [8] 60 99 59 01 00 00 00 00
+    rx 603 [8] 23 99 59 03 73 61 76 65     # 0x5999:03 = "save"
+    tx 583 [8] 60 99 59 03 00 00 00 00
+  )",
+                     bus),
+            "");
+  EXPECT_EQ(rate.count(), 0U);  // before the reset the node stays at 250 kbit/s (E23)
+  EXPECT_EQ(bus.node().bitTiming(), (LssBitTiming{0, 3}));
+  const size_t sentBeforeReset = bus.can().count();
+  EXPECT_EQ(playText(R"(
+    ignore 183
+    rx 000 [2] 81 03                       # reset node 3
+    tx 703 [1] 00                          # boot-up, now at 500 kbit/s
+    tx 183 [8] 00 00 00 00 FF FF FF 00
+  )",
+                     bus),
+            "");
+  ASSERT_EQ(rate.count(), 1U);
+  EXPECT_EQ(rate.at(0).bitsPerSecond, 500000U);
+  EXPECT_EQ(rate.at(0).framesBefore, sentBeforeReset);  // switched before the boot-up
+  EXPECT_EQ(bus.node().bitTiming(), (LssBitTiming{0, 2}));
 }
 
 TEST(GefranStorage, ADamagedLssRecordIsReportedAsALssParameterChecksumError) {

@@ -159,7 +159,9 @@ void Node::resetCommunication() noexcept {
     pendingNodeId_ = lss_.pendingNodeId();  // configured by LSS: applies now (CiA 305)
   }
   nodeId_ = cob::isValidNodeId(pendingNodeId_) ? pendingNodeId_ : cob::kLssUnconfigured;
-  bitTiming_ = pendingBitTiming_;
+  if (pendingBitTiming_ != bitTiming_) {
+    switchBitTiming(pendingBitTiming_);  // before the boot-up frame, which uses the new rate
+  }
   dictionary_.setNodeId(nodeId_);
   dictionary_.restoreDefaults(kCommunicationFirst, kCommunicationLast);
   loadGroups(groupBit(od::kGroupCommunication) | groupBit(od::kGroupLss));
@@ -190,6 +192,21 @@ void Node::resetCommunication() noexcept {
   setState(NmtState::kPreOperational);
   heartbeat_.restart(clock_.now);
   flushTx();
+}
+
+bool Node::switchBitTiming(LssBitTiming timing) noexcept {
+  // With a controller to re-time, the bit timing in use is the one the controller runs with: a
+  // timing it refuses, or one without a CiA 305 bit rate, leaves it as it was (the pending one
+  // is tried again at the next reset communication).
+  CanBitRateControl* const control = settings_.bitRateControl;
+  if (control != nullptr) {
+    const uint32_t rate = bitRateOf(timing);
+    if (rate == 0U || !control->setBitRate(rate)) {
+      return false;
+    }
+  }
+  bitTiming_ = timing;
+  return true;
 }
 
 void Node::enterState(NmtState state) noexcept {
@@ -285,7 +302,7 @@ bool Node::LssBridge::bitTimingSupported(LssBitTiming timing) noexcept {
 }
 
 void Node::LssBridge::activateBitTiming(LssBitTiming timing) noexcept {
-  node_.bitTiming_ = timing;
+  node_.switchBitTiming(timing);  // the LSS slave suspends transmission until the switch ends
   node_.pendingBitTiming_ = timing;
   if (node_.events_ != nullptr) {
     node_.events_->onBitTimingActivation(timing);

@@ -11,7 +11,8 @@ namespace {
 using costa::port::stm32::bxCanBitTiming;
 using costa::port::stm32::BxCanBitTiming;
 
-constexpr uint32_t kBitRate = 250000;
+constexpr costa::LssBitTiming kBitTiming{0, 3};  // CiA 305 table: 250 kbit/s
+constexpr uint32_t kBitRate = costa::bitRateOf(kBitTiming);
 constexpr BxCanBitTiming kTiming = bxCanBitTiming(costa::firmware::stm32f4::kApb1ClockHz, kBitRate);
 static_assert(kTiming.valid(), "APB1 clock cannot produce the bit rate exactly");
 constexpr uint8_t kNodeId = 1;
@@ -19,7 +20,15 @@ constexpr uint8_t kNodeId = 1;
 // In static storage, not on the stack: the device (its 12 KiB scratch pad) is larger than the
 // stack the linker script reserves. Neither constructor touches the hardware.
 costa::port::stm32::BxCanPort can(costa::port::stm32::bxCan1());
-costa::example::ExampleTarget target(can, kNodeId);
+
+costa::NodeSettings settings() noexcept {
+  costa::NodeSettings s = costa::example::ExampleTarget::settings(kNodeId, nullptr);
+  s.bitTiming = kBitTiming;  // the rate can.start() sets
+  s.bitRateControl = &can;   // LSS activate bit timing re-times CAN1
+  return s;
+}
+
+costa::example::ExampleTarget target(can, settings());
 
 [[noreturn]] void halt() {
   for (;;) {
@@ -34,7 +43,7 @@ int main() {
   if (!clock.start(costa::firmware::stm32f4::kCoreClockHz)) {
     halt();
   }
-  if (!can.start(kTiming.btr())) {
+  if (!can.start(kTiming.btr(), costa::firmware::stm32f4::kApb1ClockHz)) {
     halt();  // no acknowledge from the controller, or the bus never went idle
   }
   target.start(clock.nowMicroseconds());

@@ -20,35 +20,33 @@ constexpr uint16_t kLssParameters = 0x5999;
 constexpr uint16_t kGenericError = 0x1000;
 constexpr uint32_t kSaveSignature = 0x65766173;
 
-/// CiA 305 bit timing table index of a bit rate in kbit/s (the manual's list), -1 if none.
-int tableIndexOf(uint32_t kbits) {
-  switch (kbits) {
-    case 1000: return 0;
-    case 800: return 1;
-    case 500: return 2;
-    case 250: return 3;
-    case 125: return 4;
-    case 50: return 6;
-    default: return -1;
-  }
-}
+/// The bit rates of the manual's list (lines 611-617, E26) as CiA 305 table indices: 1000, 800,
+/// 500, 250, 125 and 50 kbit/s.
+constexpr uint16_t kListedBitRates =
+    (1U << 0) | (1U << 1) | (1U << 2) | (1U << 3) | (1U << 4) | (1U << 6);
 
-uint32_t kbitsOf(LssBitTiming timing) {
-  constexpr uint16_t kRates[] = {1000, 800, 500, 250, 125, 0, 50, 20, 10};
-  return timing.tableSelector == 0U && timing.tableIndex < 9U ? kRates[timing.tableIndex] : 0U;
+/// CiA 305 bit timing table index of a bit rate in kbit/s from the manual's list, -1 if none.
+int tableIndexOf(uint32_t kbits) {
+  if (kbits > 1000U) {
+    return -1;
+  }
+  const int index = cia305TableIndex(kbits * 1000U);
+  return index >= 0 && (kListedBitRates & (1U << static_cast<unsigned>(index))) != 0U ? index : -1;
 }
 
 }  // namespace
 
-NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId) noexcept {
+NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId,
+                      CanBitRateControl* bitRateControl) noexcept {
   NodeSettings s;
   s.nodeId = nodeId;
   s.storage = storage;
+  s.bitRateControl = bitRateControl;
   s.profile.tpdoOnEnteringOperational = true;  // E17
   s.profile.reportErrorRegister = false;       // E14
   s.profile.nodeGuarding = false;              // E48: heartbeat only
   s.lss = true;
-  s.lssBitRates = (1U << 0) | (1U << 1) | (1U << 2) | (1U << 3) | (1U << 4) | (1U << 6);
+  s.lssBitRates = kListedBitRates;
   s.storeAllGroups = groupBit(od::kGroupCommunication) | groupBit(od::kGroupApplication);  // E22
   s.restoreAllGroups = s.storeAllGroups;
   s.restoreAllIncludesLss = true;  // E21
@@ -149,7 +147,7 @@ AbortCode GefranDevice::prepareRead(od::ObjectDictionary& dictionary, const od::
                                     const ReadRequest& request) noexcept {
   (void)request;
   if (ref.index() == kLssParameters && ref.subIndex() == 1U) {
-    dictionary.storeUnsigned(*ref.entry, kbitsOf(node_.pendingBitTiming()));
+    dictionary.storeUnsigned(*ref.entry, bitRateOf(node_.pendingBitTiming()) / 1000U);
   } else if (ref.index() == kLssParameters && ref.subIndex() == 2U) {
     dictionary.storeUnsigned(*ref.entry, node_.pendingNodeId());
   }

@@ -18,8 +18,10 @@ static_assert(features::kParameterStorage,
 
 /// Node settings of a GRA/GRN: LSS with the manual's bit rates, "save" stores PARA
 /// (communication and application groups), "load" restores PARA and LSS-PARA, event-driven
-/// TPDO sent on entering operational, 0x1001 always 0 (E14).
-NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId) noexcept;
+/// TPDO sent on entering operational, 0x1001 always 0 (E14). `bitRateControl`: the CAN
+/// controller to re-time, or null (NodeSettings::bitRateControl).
+NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId,
+                      CanBitRateControl* bitRateControl = nullptr) noexcept;
 
 /// The factory node-id (E1).
 inline constexpr uint8_t kFactoryNodeId = 0x7F;

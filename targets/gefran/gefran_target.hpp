@@ -20,11 +20,13 @@ class GefranTarget {
 
   /// `nodeId`: the node-id when nothing is stored (or at power-on, when `explicitNodeId`).
   /// `storage` keeps parameters across power cycles; without it they live in RAM (kept across
-  /// NMT resets, like the sensor's EEPROM, but not beyond the process).
+  /// NMT resets, like the sensor's EEPROM, but not beyond the process). `bitRate`: the CAN
+  /// controller to re-time when the bit rate changes (0x5999:01 after a reset, LSS), or null.
   GefranTarget(const od::Definition& definition, CanTransmitter& can, uint8_t nodeId,
-               NvStorage* storage, bool explicitNodeId) noexcept
+               NvStorage* storage, bool explicitNodeId,
+               CanBitRateControl* bitRate = nullptr) noexcept
       : node_(definition, can,
-              settings(nodeId, storage != nullptr ? storage : &eeprom_, explicitNodeId)),
+              settings(nodeId, storage != nullptr ? storage : &eeprom_, explicitNodeId, bitRate)),
         device_(node_, sensors_) {}
 
   void start(Microseconds now) noexcept {

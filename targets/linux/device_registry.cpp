@@ -39,6 +39,7 @@ std::unique_ptr<DeviceTarget> createExample(CanTransmitter& can, const TargetOpt
   const auto nodeId = static_cast<uint8_t>(options.nodeId < 0 ? 1 : options.nodeId);
   NodeSettings settings = example::ExampleTarget::settings(nodeId, storage.get());
   settings.storedNodeIdWins = options.nodeId < 0;  // an explicit --node-id wins
+  settings.bitRateControl = options.bitRate;
   return std::make_unique<HostedTarget<example::ExampleTarget>>(&gen::example::kNames,
                                                                 std::move(storage), can, settings);
 }
@@ -56,8 +57,8 @@ std::unique_ptr<DeviceTarget> createSolo(CanTransmitter& can, const TargetOption
   const auto nodeId = static_cast<uint8_t>(options.nodeId < 0 ? 1 : options.nodeId);
   NvStorage* raw = storage.get();
   const bool explicitNodeId = options.nodeId >= 0;
-  return std::make_unique<HostedTarget<solo::SoloTarget>>(&gen::solo::kNames, std::move(storage),
-                                                          can, nodeId, raw, explicitNodeId);
+  return std::make_unique<HostedTarget<solo::SoloTarget>>(
+      &gen::solo::kNames, std::move(storage), can, nodeId, raw, explicitNodeId, options.bitRate);
 }
 
 /// Simulation commands of a GRA/GRN (targets/gefran/gefran_control.hpp): raw A B, angle DEG,
@@ -87,8 +88,9 @@ std::unique_ptr<DeviceTarget> createGefran(const od::Definition& definition,
   const auto nodeId =
       static_cast<uint8_t>(options.nodeId < 0 ? gefran::kFactoryNodeId : options.nodeId);
   NvStorage* raw = storage.get();
-  auto target = std::make_unique<HostedTarget<Target>>(&names, std::move(storage), definition, can,
-                                                       nodeId, raw, options.nodeId >= 0);
+  auto target =
+      std::make_unique<HostedTarget<Target>>(&names, std::move(storage), definition, can, nodeId,
+                                             raw, options.nodeId >= 0, options.bitRate);
   target->setController(&controlGefran<Target>);
   return target;
 }

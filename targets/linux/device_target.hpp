@@ -9,6 +9,7 @@
 
 #include "costa/node.hpp"
 #include "costa/od/definition.hpp"
+#include "costa/port/can_bit_rate.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/port/linux/file_storage.hpp"
 
@@ -18,6 +19,8 @@ namespace costa::host {
 struct TargetOptions {
   int nodeId = -1;          ///< --node-id, or -1 for the device's own default.
   std::string storagePath;  ///< --storage, or empty.
+  /// The CAN port's bit rate, for NodeSettings::bitRateControl (null: none).
+  CanBitRateControl* bitRate = nullptr;
 };
 
 class DeviceTarget {

@@ -69,6 +69,20 @@ class Tracer {
     print("--", "counters", describeCounters(now));
   }
 
+  /// "bit rate now 500 kbit/s": the node re-timed the port.
+  void bitRate(uint32_t bitsPerSecond) {
+    if (!enabled_) {
+      return;
+    }
+    char text[40];
+    if (bitsPerSecond % 1000U == 0U) {
+      std::snprintf(text, sizeof(text), "bit rate now %u kbit/s", bitsPerSecond / 1000U);
+    } else {
+      std::snprintf(text, sizeof(text), "bit rate now %u bit/s", bitsPerSecond);
+    }
+    print("--", text, "");
+  }
+
  private:
   void print(const char* direction, const std::string& what, const std::string& meaning) {
     const uint64_t elapsed = clock_.nowMicroseconds() - epoch_;
@@ -95,6 +109,24 @@ class TracedSocket final : public CanTransmitter {
       return false;
     }
     tracer_.line("tx", frame);
+    return true;
+  }
+
+ private:
+  port::SocketCanPort& socket_;
+  Tracer& tracer_;
+};
+
+/// The node's bit rate control: the socket's (which records the rate; the interface's own rate
+/// is the system's), with every switch traced.
+class TracedBitRate final : public CanBitRateControl {
+ public:
+  TracedBitRate(port::SocketCanPort& socket, Tracer& tracer) : socket_(socket), tracer_(tracer) {}
+  bool setBitRate(uint32_t bitsPerSecond) noexcept override {
+    if (!socket_.setBitRate(bitsPerSecond)) {
+      return false;
+    }
+    tracer_.bitRate(bitsPerSecond);
     return true;
   }
 
@@ -168,9 +200,11 @@ int runSlave(const SlaveOptions& options) {
   port::LinuxMonotonicClock clock;
   Tracer tracer(options.trace, clock);
   TracedSocket transmitter(socket, tracer);
+  TracedBitRate bitRate(socket, tracer);
   TargetOptions targetOptions;
   targetOptions.nodeId = options.nodeId;
   targetOptions.storagePath = options.storagePath;
+  targetOptions.bitRate = &bitRate;
   std::unique_ptr<DeviceTarget> target =
       findDevice(options.device)->create(transmitter, targetOptions, &error);
   if (!target) {

@@ -44,10 +44,13 @@ constexpr DeviceProfile profile() noexcept {
 }
 
 /// The SOLO keeps every M object as soon as it is written (it has no store command).
-inline NodeSettings settings(uint8_t nodeId, NvStorage* storage) noexcept {
+/// `bitRateControl`: the CAN controller to re-time, or null (NodeSettings::bitRateControl).
+inline NodeSettings settings(uint8_t nodeId, NvStorage* storage,
+                             CanBitRateControl* bitRateControl = nullptr) noexcept {
   NodeSettings s;
   s.nodeId = nodeId;
   s.storage = storage;
+  s.bitRateControl = bitRateControl;
   s.saveParametersOnWrite = true;
   s.profile = profile();
   s.staticPdoMappings =

@@ -4,10 +4,10 @@
 
 namespace costa::solo {
 
-SoloTarget::SoloTarget(CanTransmitter& can, uint8_t nodeId, NvStorage* storage,
-                       bool explicitNodeId) noexcept
+SoloTarget::SoloTarget(CanTransmitter& can, uint8_t nodeId, NvStorage* storage, bool explicitNodeId,
+                       CanBitRateControl* bitRate) noexcept
     : node_(gen::solo::kDefinition, can,
-            settings(address(nodeId), storage != nullptr ? storage : &eeprom_)),
+            settings(address(nodeId), storage != nullptr ? storage : &eeprom_, bitRate)),
       device_(node_, drive_, address(nodeId), explicitNodeId) {
   device_.onFactoryReset(&SoloTarget::discardStoredParameters, this);
 }

@@ -28,9 +28,10 @@ class SoloTarget {
   /// `explicitNodeId`; 0 means 1 (manual line 861), and so does any value above 127: the SOLO
   /// has no LSS, so it cannot start without a node-id (0x3001 holds 1..127, errata D6).
   /// `storage` keeps the M objects across power cycles; without it they live in RAM (kept
-  /// across NMT resets, like the SOLO's EEPROM, but not beyond the process).
+  /// across NMT resets, like the SOLO's EEPROM, but not beyond the process). `bitRate`: the
+  /// controller to re-time, or null (NodeSettings::bitRateControl).
   SoloTarget(CanTransmitter& can, uint8_t nodeId, NvStorage* storage = nullptr,
-             bool explicitNodeId = false) noexcept;
+             bool explicitNodeId = false, CanBitRateControl* bitRate = nullptr) noexcept;
 
   void start(Microseconds now) noexcept { node_.start(now); }
   void onFrame(const CanFrame& frame, Microseconds now) noexcept { node_.onFrame(frame, now); }

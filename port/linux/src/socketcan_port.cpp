@@ -114,4 +114,12 @@ SocketCanPort::Received SocketCanPort::receive(CanFrame* frame, SocketCanEvents*
   return Received::kFrame;
 }
 
+bool SocketCanPort::setBitRate(uint32_t bitsPerSecond) noexcept {
+  if (bitsPerSecond == 0U) {
+    return false;
+  }
+  bitRate_ = bitsPerSecond;
+  return true;
+}
+
 }  // namespace costa::port

@@ -1,5 +1,7 @@
 #include "costa/port/stm32/bxcan_port.hpp"
 
+#include "costa/port/stm32/bxcan_bit_timing.hpp"
+
 namespace costa::port::stm32 {
 
 namespace {
@@ -45,10 +47,11 @@ void BxCanPort::acceptEverythingIntoFifo0() noexcept {
   registers_.fmr = registers_.fmr & ~fmr::kFinit;
 }
 
-bool BxCanPort::start(uint32_t btr) noexcept {
+bool BxCanPort::start(uint32_t btr, uint32_t clockHz) noexcept {
   using namespace bxcan;
   errorPassive_ = false;
   busOff_ = false;
+  clockHz_ = clockHz;
   // After reset the controller sleeps; initialisation is requested and sleep left in one write.
   registers_.mcr = (registers_.mcr & ~mcr::kSleep) | mcr::kInrq;
   if (!waitForStatus(msr::kInak | msr::kSlak, msr::kInak)) {
@@ -56,9 +59,26 @@ bool BxCanPort::start(uint32_t btr) noexcept {
   }
   registers_.mcr = (registers_.mcr & mcr::kDbf) | mcr::kInrq | mcr::kAbom | mcr::kTxfp;
   registers_.btr = btr;
+  configured_ = true;
   acceptEverythingIntoFifo0();
   registers_.mcr = registers_.mcr & ~mcr::kInrq;
   return waitForStatus(msr::kInak, 0);
+}
+
+bool BxCanPort::setBitRate(uint32_t bitsPerSecond) noexcept {
+  using namespace bxcan;
+  const BxCanBitTiming timing = bxCanBitTiming(clockHz_, bitsPerSecond);
+  if (!configured_ || !timing.valid()) {
+    return false;
+  }
+  registers_.mcr = registers_.mcr | mcr::kInrq;
+  if (!waitForStatus(msr::kInak, msr::kInak)) {
+    registers_.mcr = registers_.mcr & ~mcr::kInrq;
+    return false;
+  }
+  registers_.btr = (registers_.btr & (btr::kLbkm | btr::kSilm)) | timing.btr();
+  registers_.mcr = registers_.mcr & ~mcr::kInrq;
+  return true;
 }
 
 bool BxCanPort::tryTransmit(const CanFrame& frame) noexcept {

@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "costa/cob_ids.hpp"
+#include "costa/lss_bit_timing.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/time.hpp"
 #include "costa/tx_queue.hpp"
@@ -29,22 +30,6 @@ struct LssIdentity {
   uint32_t revisionNumber = 0;
   uint32_t serialNumber = 0;
 };
-
-/// A bit timing as CiA 305 selects it. Table selector 0 is the CiA table, whose index means:
-/// 0 = 1000, 1 = 800, 2 = 500, 3 = 250, 4 = 125 kbit/s, 5 reserved, 6 = 50, 7 = 20, 8 = 10 kbit/s,
-/// 9 = automatic bit rate detection. Selectors 1..127 are reserved; 128..255 name
-/// manufacturer-specific tables.
-struct LssBitTiming {
-  uint8_t tableSelector = 0;
-  uint8_t tableIndex = 0;
-};
-
-inline bool operator==(const LssBitTiming& a, const LssBitTiming& b) noexcept {
-  return a.tableSelector == b.tableSelector && a.tableIndex == b.tableIndex;
-}
-inline bool operator!=(const LssBitTiming& a, const LssBitTiming& b) noexcept {
-  return !(a == b);
-}
 
 /// Outcome of store configuration: the CiA 305 error code sent in byte 1 of the response.
 enum class LssStoreResult : uint8_t {

@@ -30,6 +30,7 @@
 #include "costa/od/object_dictionary.hpp"
 #include "costa/parameter_store.hpp"
 #include "costa/pdo_engine.hpp"
+#include "costa/port/can_bit_rate.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/port/nv_storage.hpp"
 #include "costa/sdo_server.hpp"
@@ -81,8 +82,14 @@ struct NodeSettings {
   bool restoreAllIncludesLss = false;  ///< 0x1011:01 also discards the stored LSS configuration
   bool lss = false;                    ///< CiA 305 LSS slave on 0x7E5 / 0x7E4 (features::kLss)
   uint16_t lssBitRates = 0;            ///< CiA 305 table indices the controller can switch to
-  LssBitTiming bitTiming{0, 3};        ///< bit timing at power-on (CiA 305 index 3: 250 kbit/s)
-  bool storedNodeIdWins = true;        ///< a stored LSS node-id replaces `nodeId` at power-on
+  /// Bit timing at power-on (CiA 305 index 3: 250 kbit/s): the rate the integrator starts the
+  /// CAN controller with. A stored LSS bit timing replaces it at power-on.
+  LssBitTiming bitTiming{0, 3};
+  /// The controller to re-time when the bit timing in use changes (LSS activate bit timing, a
+  /// pending bit timing at reset communication or power-on); null: none, the node only records
+  /// the change (and NodeEvents::onBitTimingActivation() tells the application of LSS's).
+  CanBitRateControl* bitRateControl = nullptr;
+  bool storedNodeIdWins = true;  ///< a stored LSS node-id replaces `nodeId` at power-on
   /// Every remote write that changes a stored entry saves its group at once (devices that keep
   /// parameters without a store command). CiA 301 saves only on 0x1010.
   bool saveParametersOnWrite = false;
@@ -205,7 +212,8 @@ class Node {
   const LssSlaveService& lss() const noexcept { return lss_; }
   /// The SDO server (read-only: whether a transfer runs, consistency checks).
   const SdoServer& sdo() const noexcept { return sdo_; }
-  /// Bit timing in use (CiA 305 table selector and index).
+  /// Bit timing in use (CiA 305 table selector and index). With a NodeSettings::bitRateControl,
+  /// the rate the controller last accepted.
   LssBitTiming bitTiming() const noexcept { return bitTiming_; }
   /// The parameter store when the node has storage (laid out), else null.
   ParameterStore* parameterStore() noexcept {
@@ -227,6 +235,7 @@ class Node {
   void loadGroups(uint32_t groups) noexcept;
   void reportInvalidParameters() noexcept;
   void loadLssConfiguration() noexcept;
+  bool switchBitTiming(LssBitTiming timing) noexcept;
   LssIdentity identity() const noexcept;
 
   /// The node's side of the LSS slave and of "restore all".

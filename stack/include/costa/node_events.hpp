@@ -45,7 +45,10 @@ class NodeEvents {
     (void)group;
     (void)result;
   }
-  /// LSS activate bit timing: the controller must switch to `timing` now (CiA 305 table).
+  /// LSS activate bit timing, at the switch moment (after the first switch delay): the
+  /// controller must run at `timing` (CiA 305 table) from now on. With a
+  /// NodeSettings::bitRateControl the node has just asked it to (Node::bitTiming() shows whether
+  /// it switched); without one, the application switches the controller here.
   virtual void onBitTimingActivation(LssBitTiming timing) noexcept { (void)timing; }
   /// The CAN controller went bus-off / recovered.
   virtual void onBusOff() noexcept {}

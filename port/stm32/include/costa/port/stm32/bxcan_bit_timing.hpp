@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 
+#include "costa/lss_bit_timing.hpp"
 #include "costa/port/stm32/bxcan_registers.hpp"
 
 namespace costa::port::stm32 {
@@ -101,21 +102,9 @@ constexpr BxCanBitTiming bxCanBitTiming(uint32_t clockHz, uint32_t bitRate,
   return best;
 }
 
-/// Bit rate of an entry of the CiA 305 (LSS) standard bit timing table, in bit/s; 0 for
-/// index 5 (reserved) and for indices beyond 8 (9 is automatic bit rate detection).
-constexpr uint32_t cia305BitRate(uint8_t tableIndex) noexcept {
-  switch (tableIndex) {
-    case 0: return 1000000;
-    case 1: return 800000;
-    case 2: return 500000;
-    case 3: return 250000;
-    case 4: return 125000;
-    case 6: return 50000;
-    case 7: return 20000;
-    case 8: return 10000;
-    default: return 0;
-  }
-}
+/// The CiA 305 table (LSS "configure bit timing", table selector 0) is the stack's:
+/// costa::cia305BitRate() in costa/lss_bit_timing.hpp.
+using costa::cia305BitRate;
 
 /// Timing for an entry of the CiA 305 table (LSS "configure bit timing", table selector 0).
 /// Not valid when the entry has no bit rate or the clock cannot produce it exactly: an LSS

@@ -17,6 +17,7 @@
 #include <stdint.h>
 
 #include "costa/node.hpp"
+#include "costa/port/can_bit_rate.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/port/stm32/bxcan_registers.hpp"
 
@@ -45,7 +46,7 @@ class BxCanEvents {
   size_t count_ = 0;
 };
 
-class BxCanPort final : public CanTransmitter {
+class BxCanPort final : public CanTransmitter, public CanBitRateControl {
  public:
   /// Bound on status reads while start() waits for the controller. At 168 MHz one read and the
   /// loop around it take some tens of nanoseconds, so the default allows some tens of
@@ -80,7 +81,22 @@ class BxCanPort final : public CanTransmitter {
   /// peripheral?) or did not join the bus in step 5 (CANRX held dominant: transceiver missing
   /// or unpowered?). In the second case it joins as soon as the bus goes idle. May be called
   /// again to restart; the error state the driver remembers is reset to error active.
-  bool start(uint32_t btr) noexcept;
+  /// `clockHz` is the APB1 clock `btr` was computed for; setBitRate() needs it (0: unknown,
+  /// setBitRate() refuses).
+  bool start(uint32_t btr, uint32_t clockHz = 0) noexcept;
+
+  /// Re-times the running controller (the node's CanBitRateControl: LSS activate bit timing,
+  /// a stored bit timing at reset communication):
+  ///   1. computes CAN_BTR for `bitsPerSecond` from start()'s clock (bxCanBitTiming());
+  ///   2. requests initialisation and waits for INAK (bounded; a frame in progress ends first);
+  ///   3. writes CAN_BTR, keeping its loop back and silent bits;
+  ///   4. leaves initialisation without waiting: the controller joins the bus by itself once it
+  ///      has seen it idle at the new rate, and sends what its mailboxes hold from then on.
+  /// Returns false, touching nothing, before a start() that reached initialisation, without a
+  /// clock, or when the clock cannot produce the rate exactly (800 kbit/s from 42 MHz); false
+  /// with the old timing kept when the controller does not acknowledge step 2 (the request is
+  /// withdrawn). Filters, MCR and the remembered error state are kept.
+  bool setBitRate(uint32_t bitsPerSecond) noexcept override;
 
   /// Hands `frame` to a free transmit mailbox and requests its transmission. False, touching
   /// nothing, when all three mailboxes are pending. A DLC above 8 is sent as 8.
@@ -107,6 +123,8 @@ class BxCanPort final : public CanTransmitter {
   uint32_t waitLimit_;
   WaitHook waitHook_ = nullptr;
   void* waitContext_ = nullptr;
+  uint32_t clockHz_ = 0;
+  bool configured_ = false;  ///< start() has written CAN_BTR
   bool errorPassive_ = false;
   bool busOff_ = false;
 };
