@@ -1,6 +1,7 @@
 // SDO block transfers driven by a test client: whole values of 1 byte to 10 kB up and down, with
-// and without CRC, lost segments, CRC errors and client aborts. The scratch pad (0x2008, a
-// DOMAIN streamed by the example device) takes the large values.
+// and without CRC, lost segments and client aborts (faults at every size, CRC errors and a lost
+// last segment: sdo_block_faults_test.cpp). The scratch pad (0x2008, a DOMAIN streamed by the
+// example device) takes the large values.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -8,45 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include "device_target.hpp"
-#include "example_target.hpp"
-#include "in_process_bus.hpp"
-#include "sdo_block_client.hpp"
-#include "transcript_player.hpp"
+#include "block_transfer_fixture.hpp"
 
 namespace costa::test {
 namespace {
-
-constexpr uint16_t kScratchPad = 0x2008;
-constexpr uint32_t kCrcError = 0x05040004;
-
-std::vector<uint8_t> pattern(size_t size) {
-  std::vector<uint8_t> data(size);
-  for (size_t i = 0; i < size; ++i) {
-    data[i] = static_cast<uint8_t>((i * 7U + i / 251U) & 0xFFU);
-  }
-  return data;
-}
-
-class BlockTransferTest : public ::testing::Test {
- protected:
-  BlockTransferTest() : bus_("example", 1), client_(bus_, 1) {}
-
-  void SetUp() override { ASSERT_EQ(playText("tx 701 [1] 00", bus_), ""); }
-
-  example::ExampleTarget& device() {
-    return dynamic_cast<host::HostedTarget<example::ExampleTarget>&>(bus_.target()).composition();
-  }
-  std::vector<uint8_t> scratchPad() {
-    const uint8_t* data = device().scratchPad();
-    return std::vector<uint8_t>(data, data + device().scratchPadLength());
-  }
-  /// The server sent nothing the client did not read.
-  void expectSilence() { EXPECT_EQ(bus_.unread(), 0U); }
-
-  InProcessBus bus_;
-  SdoBlockClient client_;
-};
 
 // Sizes: 1 byte, one whole segment, a whole 127-segment sub-block, 10 kB (several sub-blocks).
 class BlockTransferSizes : public BlockTransferTest,
@@ -166,28 +132,6 @@ TEST_F(BlockTransferTest, SmallUploadBlockSizes) {
     EXPECT_EQ(up.data, data);
     EXPECT_EQ(up.subBlocks, (15 + blockSize - 1) / blockSize);
   }
-}
-
-TEST_F(BlockTransferTest, CorruptedCrcDiscardsAStreamedValue) {
-  ASSERT_TRUE(client_.download(kScratchPad, 0, pattern(50)).ok());
-  BlockTransferOptions options;
-  options.corruptCrc = true;
-  const BlockTransferResult down = client_.download(kScratchPad, 0, pattern(10240), options);
-  EXPECT_EQ(down.abortCode, kCrcError);
-  EXPECT_EQ(device().scratchPadLength(), 0U);  // the device was told to discard
-  expectSilence();
-}
-
-TEST_F(BlockTransferTest, CorruptedCrcLeavesABufferedValueUnchanged) {
-  BlockTransferOptions options;
-  options.corruptCrc = true;
-  const std::string text = "a label of thirty-two characters";
-  const BlockTransferResult down =
-      client_.download(0x2006, 0, std::vector<uint8_t>(text.begin(), text.end()), options);
-  EXPECT_EQ(down.abortCode, kCrcError);
-  const BlockTransferResult up = client_.upload(0x2006, 0);
-  ASSERT_TRUE(up.ok()) << up.error;
-  EXPECT_EQ(std::string(up.data.begin(), up.data.end()), "unnamed");
 }
 
 TEST_F(BlockTransferTest, ClientAbortInTheMiddleOfADownload) {

@@ -125,6 +125,54 @@ TEST_F(StoreRestore, ResetCommunicationReloadsOnlyTheCommunicationArea) {
   EXPECT_EQ(value(0x2000, 0), 30000U);  // application untouched
 }
 
+TEST_F(StoreRestore, RestoringCommunicationDefaultsAppliesAtResetCommunication) {
+  EXPECT_TRANSCRIPT(std::string(kChangeValues) + R"(
+    rx 601 [8] 23 10 10 01 73 61 76 65   # "save" all: SYNC 0x090, setpoint 20000
+    tx 581 [8] 60 10 10 01 00 00 00 00
+    rx 601 [8] 23 11 10 02 6C 6F 61 64   # "load" communication
+    tx 581 [8] 60 11 10 02 00 00 00 00
+    rx 601 [8] 40 05 10 00 00 00 00 00   # nothing changes before the reset
+    tx 581 [8] 43 05 10 00 90 00 00 00
+    rx 000 [2] 82 01                     # reset communication
+    tx 701 [1] 00
+    rx 601 [8] 40 05 10 00 00 00 00 00   # SYNC: the default
+    tx 581 [8] 43 05 10 00 80 00 00 00
+    rx 601 [8] 40 00 20 00 00 00 00 00   # setpoint: still the stored value
+    tx 581 [8] 43 00 20 00 20 4E 00 00
+    rx 000 [2] 81 01                     # reset node: application loaded from storage again
+    tx 701 [1] 00
+    rx 601 [8] 40 05 10 00 00 00 00 00
+    tx 581 [8] 43 05 10 00 80 00 00 00
+    rx 601 [8] 40 00 20 00 00 00 00 00
+    tx 581 [8] 43 00 20 00 20 4E 00 00
+  )");
+  powerOn();
+  EXPECT_EQ(value(0x1005, 0), 0x80U);
+  EXPECT_EQ(value(0x2000, 0), 20000U);
+}
+
+TEST_F(StoreRestore, RestoringApplicationDefaultsAppliesAtResetNode) {
+  EXPECT_TRANSCRIPT(std::string(kChangeValues) + R"(
+    rx 601 [8] 23 10 10 01 73 61 76 65   # "save" all: SYNC 0x090, setpoint 20000
+    tx 581 [8] 60 10 10 01 00 00 00 00
+    rx 601 [8] 23 11 10 03 6C 6F 61 64   # "load" application
+    tx 581 [8] 60 11 10 03 00 00 00 00
+    rx 000 [2] 82 01                     # reset communication leaves the application alone
+    tx 701 [1] 00
+    rx 601 [8] 40 00 20 00 00 00 00 00
+    tx 581 [8] 43 00 20 00 20 4E 00 00
+    rx 000 [2] 81 01                     # reset node
+    tx 701 [1] 00
+    rx 601 [8] 40 00 20 00 00 00 00 00   # setpoint: the default 1000
+    tx 581 [8] 43 00 20 00 E8 03 00 00
+    rx 601 [8] 40 05 10 00 00 00 00 00   # SYNC: still the stored value
+    tx 581 [8] 43 05 10 00 90 00 00 00
+  )");
+  powerOn();
+  EXPECT_EQ(value(0x1005, 0), 0x90U);
+  EXPECT_EQ(value(0x2000, 0), 1000U);
+}
+
 TEST_F(StoreRestore, WrongSignaturesAbort_08000020) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 23 10 10 01 73 61 76 66   # "savf"

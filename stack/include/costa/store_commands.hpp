@@ -7,7 +7,14 @@
 // groups, 0 otherwise. Writing "save" (0x65766173) to 0x1010 saves the groups; writing "load"
 // (0x64616F6C) to 0x1011 stores "restore defaults" markers, so the defaults come back at the
 // next reset node / reset communication. Any other value aborts 0x08000020, as does a sub-index
-// without groups or a failing medium.
+// without groups or a failing medium; a sub-index the dictionary does not declare aborts
+// 0x06090011 before it reaches this hook.
+//
+// Sub-index 1 saves (or restores) its groups one after the other, by ascending number, each
+// atomically (docs/storage.md): a power loss in the middle leaves every group entirely old or
+// entirely new, the groups before the cut new and the others old. CiA 301 makes each
+// sub-index one parameter area, saved and restored on its own; "all" is every area, not one
+// set that must be consistent as a whole.
 #pragma once
 
 #include <stdint.h>
