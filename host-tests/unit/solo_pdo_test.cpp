@@ -51,27 +51,8 @@ class SoloPdo : public DeviceTest {
   SoloPdo() : DeviceTest("solo", 1) {}
   void SetUp() override { ASSERT_EQ(play("tx 701 [1] 00"), ""); }
 
-  /// The 4 data bytes of `index` read by SDO (the response's bytes 4-7).
-  std::string readBySdo(uint16_t index) {
-    CanFrame request;
-    request.id = 0x601;
-    request.dlc = 8;
-    request.data[0] = 0x40;
-    request.data[1] = static_cast<uint8_t>(index & 0xFFU);
-    request.data[2] = static_cast<uint8_t>(index >> 8);
-    bus_.send(request);
-    CanFrame response;
-    if (!bus_.receive(&response, 0) || response.id != 0x581U || response.dlc != 8U ||
-        response.data[0] != 0x42U || response.data[1] != request.data[1] ||
-        response.data[2] != request.data[2]) {
-      ADD_FAILURE() << "no upload response for 0x" << hex(index);
-      return "";
-    }
-    return wireBytes(static_cast<uint32_t>(response.data[4]) |
-                     (static_cast<uint32_t>(response.data[5]) << 8U) |
-                     (static_cast<uint32_t>(response.data[6]) << 16U) |
-                     (static_cast<uint32_t>(response.data[7]) << 24U));
-  }
+  /// The 4 data bytes of `index` read by SDO (the SOLO's 0x42 response, errata P1).
+  std::string readBySdo(uint16_t index) { return wireBytes(uploadFourBytes(index, 0, 0x42)); }
 };
 
 // ---------------------------------------------------------------------------------------------

@@ -19,23 +19,7 @@ class SoloReadings : public DeviceTest {
   void SetUp() override { ASSERT_EQ(play("tx 701 [1] 00"), ""); }
 
   /// The value of `index` read by SDO (the SOLO's 0x42 response with four bytes, errata P1).
-  uint32_t read(uint16_t index) {
-    CanFrame request;
-    request.id = 0x601;
-    request.dlc = 8;
-    request.data[0] = 0x40;
-    request.data[1] = static_cast<uint8_t>(index & 0xFFU);
-    request.data[2] = static_cast<uint8_t>(index >> 8);
-    bus_.send(request);
-    CanFrame response;
-    if (!bus_.receive(&response, 0) || response.id != 0x581U || response.dlc != 8U ||
-        response.data[0] != 0x42U || response.data[1] != request.data[1] ||
-        response.data[2] != request.data[2]) {
-      ADD_FAILURE() << "no upload response for 0x" << std::hex << index;
-      return 0;
-    }
-    return solo::loadData(&response.data[4]);
-  }
+  uint32_t read(uint16_t index) { return uploadFourBytes(index, 0, 0x42); }
   double readSfxt(uint16_t index) { return solo::sfxtToDouble(static_cast<int32_t>(read(index))); }
   int32_t readInt(uint16_t index) { return static_cast<int32_t>(read(index)); }
 

@@ -14,6 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/can_controller_event.hpp"
 #include "costa/compiled_out.hpp"
 #include "costa/device_profile.hpp"
 #include "costa/emcy_producer.hpp"
@@ -93,15 +94,6 @@ struct NodeSettings {
   /// Every remote write that changes a stored entry saves its group at once (devices that keep
   /// parameters without a store command). CiA 301 saves only on 0x1010.
   bool saveParametersOnWrite = false;
-};
-
-/// Signals from the CAN controller's driver (CiA 301 EMCY codes 0x81xx).
-enum class CanControllerEvent : uint8_t {
-  kRxOverrun,        ///< frames were lost: EMCY 0x8110
-  kErrorPassive,     ///< EMCY 0x8120 until error active again
-  kErrorActive,      ///< back to normal: clears error passive
-  kBusOff,           ///< transmission stops; the communication error behaviour (0x1029) applies
-  kBusOffRecovered,  ///< transmission resumes: EMCY 0x8140
 };
 
 /// Counters of events that are nobody's fault but worth seeing.

@@ -24,27 +24,7 @@ struct SocketCanErrorState {
 };
 
 /// The controller events of one error frame, in the order they are to be reported.
-class SocketCanEvents {
- public:
-  /// An overrun, the end of a bus-off, an error state change and the start of a bus-off.
-  static constexpr size_t kCapacity = 4;
-
-  size_t size() const noexcept { return count_; }
-  bool empty() const noexcept { return count_ == 0; }
-  CanControllerEvent operator[](size_t i) const noexcept { return events_[i]; }
-  const CanControllerEvent* begin() const noexcept { return events_; }
-  const CanControllerEvent* end() const noexcept { return events_ + count_; }
-
-  void add(CanControllerEvent event) noexcept {
-    if (count_ < kCapacity) {
-      events_[count_++] = event;
-    }
-  }
-
- private:
-  CanControllerEvent events_[kCapacity] = {};
-  size_t count_ = 0;
-};
+using SocketCanEvents = CanControllerEvents<4>;
 
 /// The events `frame` (an error frame: CAN_ERR_FLAG set) reports to a node whose controller was
 /// in `*state`; updates `*state`. Classes other than CAN_ERR_CRTL, CAN_ERR_BUSOFF and

@@ -25,26 +25,7 @@ namespace costa::port::stm32 {
 
 /// The controller events found by one BxCanPort::poll(), in the order they happened (at most
 /// one overrun and two error state changes).
-class BxCanEvents {
- public:
-  static constexpr size_t kCapacity = 3;
-
-  size_t size() const noexcept { return count_; }
-  bool empty() const noexcept { return count_ == 0; }
-  CanControllerEvent operator[](size_t i) const noexcept { return events_[i]; }
-  const CanControllerEvent* begin() const noexcept { return events_; }
-  const CanControllerEvent* end() const noexcept { return events_ + count_; }
-
-  void add(CanControllerEvent event) noexcept {
-    if (count_ < kCapacity) {
-      events_[count_++] = event;
-    }
-  }
-
- private:
-  CanControllerEvent events_[kCapacity] = {};
-  size_t count_ = 0;
-};
+using BxCanEvents = CanControllerEvents<3>;
 
 class BxCanPort final : public CanTransmitter, public CanBitRateControl {
  public:
