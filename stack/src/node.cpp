@@ -194,7 +194,7 @@ void Node::resetCommunication() noexcept {
   flushTx();
 }
 
-bool Node::switchBitTiming(LssBitTiming timing) noexcept {
+void Node::switchBitTiming(LssBitTiming timing) noexcept {
   // With a controller to re-time, the bit timing in use is the one the controller runs with: a
   // timing it refuses, or one without a CiA 305 bit rate, leaves it as it was (the pending one
   // is tried again at the next reset communication).
@@ -202,11 +202,10 @@ bool Node::switchBitTiming(LssBitTiming timing) noexcept {
   if (control != nullptr) {
     const uint32_t rate = bitRateOf(timing);
     if (rate == 0U || !control->setBitRate(rate)) {
-      return false;
+      return;
     }
   }
   bitTiming_ = timing;
-  return true;
 }
 
 void Node::enterState(NmtState state) noexcept {

@@ -227,7 +227,9 @@ class Node {
   void loadGroups(uint32_t groups) noexcept;
   void reportInvalidParameters() noexcept;
   void loadLssConfiguration() noexcept;
-  bool switchBitTiming(LssBitTiming timing) noexcept;
+  /// Re-times the controller (when there is one to re-time) and makes `timing` the one in use
+  /// if it accepted.
+  void switchBitTiming(LssBitTiming timing) noexcept;
   LssIdentity identity() const noexcept;
 
   /// The node's side of the LSS slave and of "restore all".
