@@ -116,7 +116,7 @@ std::string verifyRpdo(BenchNode& node) {
   const od::ObjectDictionary& dictionary = node.node().dictionary();
   const od::EntryRef offset = dictionary.find(0x2004, 2);
   if (dictionary.readUnsigned(0x2000, 0, 0) != 10000U || !offset.valid() ||
-      dictionary.readSigned(*offset.entry) != -10) {
+      dictionary.readSigned(offset) != -10) {
     return "RPDO1 did not store 0x2000 = 10000 and 0x2004:02 = -10";
   }
   return node.expectFrames({});

@@ -44,11 +44,13 @@ bool nativeValue(const uint8_t* address, size_t size, uint64_t* raw) {
 
 /// True when `raw` (the value's bits, zero-extended) is within the entry's limits; else false
 /// with the value and the limits in `problem`.
-bool withinLimits(const od::SubEntry& entry, uint64_t raw, std::string* problem) {
-  const od::Limits& limits = *entry.limits;
+bool withinLimits(const od::Definition& definition, const od::EntryRef& ref, uint64_t raw,
+                  std::string* problem) {
+  const od::Limits& limits = definition.limits[ref.row->limits - 1U];
+  const od::DataType type = ref.type();
   char text[160];
-  if (od::isSigned(entry.type)) {
-    const int64_t value = signExtend(raw, entry.size);
+  if (od::isSigned(type)) {
+    const int64_t value = signExtend(raw, ref.size());
     const auto low = static_cast<int64_t>(limits.low);
     const auto high = static_cast<int64_t>(limits.high);
     if (value >= low && value <= high) {
@@ -56,8 +58,8 @@ bool withinLimits(const od::SubEntry& entry, uint64_t raw, std::string* problem)
     }
     snprintf(text, sizeof(text), "%lld outside %lld..%lld", static_cast<long long>(value),
              static_cast<long long>(low), static_cast<long long>(high));
-  } else if (od::isReal(entry.type)) {
-    const double value = asDouble(entry.type, raw);
+  } else if (od::isReal(type)) {
+    const double value = asDouble(type, raw);
     const double low = asDouble(od::DataType::kReal64, limits.low);
     const double high = asDouble(od::DataType::kReal64, limits.high);
     if (value >= low && value <= high) {  // false for NaN
@@ -77,47 +79,44 @@ bool withinLimits(const od::SubEntry& entry, uint64_t raw, std::string* problem)
 }
 
 /// True when the entry's value fits its definition; else false with the reason in `problem`.
-bool entryFits(const od::ObjectDictionary& dictionary, const od::SubEntry& entry,
+bool entryFits(const od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                std::string* problem) {
-  if ((entry.attributes & od::kInRom) != 0U || entry.type == od::DataType::kDomain) {
+  const od::DataType type = ref.type();
+  if (ref.inRom() || type == od::DataType::kDomain) {
     return true;
   }
-  if (entry.type == od::DataType::kVisibleString) {
-    if (dictionary.address(entry)[entry.size] != 0U) {
+  if (type == od::DataType::kVisibleString) {
+    if (dictionary.address(ref)[ref.size()] != 0U) {
       *problem = "string without its terminating zero";
       return false;
     }
     return true;
   }
-  if (!od::isNumeric(entry.type)) {
+  if (!od::isNumeric(type)) {
     return true;
   }
   uint64_t raw = 0;
-  if (!nativeValue(dictionary.address(entry), entry.size, &raw)) {
-    *problem = "numeric value of " + std::to_string(entry.size) + " bytes";
+  if (!nativeValue(dictionary.address(ref), ref.size(), &raw)) {
+    *problem = "numeric value of " + std::to_string(ref.size()) + " bytes";
     return false;
   }
-  if (entry.type == od::DataType::kBoolean && raw > 1U) {
+  if (type == od::DataType::kBoolean && raw > 1U) {
     *problem = "BOOLEAN " + std::to_string(raw);
     return false;
   }
-  return (entry.attributes & od::kHasLimits) == 0U || withinLimits(entry, raw, problem);
+  return ref.row->limits == 0U || withinLimits(dictionary.definition(), ref, raw, problem);
 }
 
 }  // namespace
 
 std::string checkDictionaryValues(const od::ObjectDictionary& dictionary) {
-  const od::Definition& definition = dictionary.definition();
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const od::Object& object = definition.objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      std::string problem;
-      if (!entryFits(dictionary, object.subs[s], &problem)) {
-        char where[32];
-        snprintf(where, sizeof(where), "0x%04X:%02X: ", object.index,
-                 static_cast<unsigned>(object.subs[s].subIndex));
-        return std::string("dictionary value ") + where + problem;
-      }
+  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
+    std::string problem;
+    if (!entryFits(dictionary, ref, &problem)) {
+      char where[32];
+      snprintf(where, sizeof(where), "0x%04X:%02X: ", ref.index(),
+               static_cast<unsigned>(ref.subIndex()));
+      return std::string("dictionary value ") + where + problem;
     }
   }
   return "";

@@ -48,7 +48,7 @@ void forEachPdo(const Node& node, Visit visit) {
     if (!ref.valid()) {
       continue;
     }
-    const auto value = static_cast<uint32_t>(dictionary.readUnsigned(*ref.entry));
+    const auto value = static_cast<uint32_t>(dictionary.readUnsigned(ref));
     const bool bit31 = (value & kInvalidBit) != 0U;
     const bool valid = (cia301 ? !bit31 : bit31) && plainStandardId(value);
     visit(PdoCobId{index, value, valid, value & kIdBits}, receive);

@@ -6,6 +6,7 @@
 #include <initializer_list>
 
 #include "costa/lss_protocol.hpp"
+#include "costa/od/entry_ref.hpp"
 
 namespace costa::fuzz {
 namespace {
@@ -37,10 +38,10 @@ void token(std::string* out, std::initializer_list<uint8_t> bytes) {
 }
 
 /// The default of a numeric RAM entry of up to 4 bytes (without the node-id of $NODEID).
-uint32_t defaultValue(const od::Definition& definition, const od::SubEntry& entry) {
+uint32_t defaultValue(const od::Definition& definition, const od::EntryRef& entry) {
   uint32_t value = 0;
-  const uint8_t* at = static_cast<const uint8_t*>(definition.defaults) + entry.offset;
-  switch (entry.size) {
+  const uint8_t* at = static_cast<const uint8_t*>(definition.defaults) + entry.offset();
+  switch (entry.size()) {
     case 1: value = *at; break;
     case 2: {
       uint16_t half = 0;
@@ -57,26 +58,26 @@ uint32_t defaultValue(const od::Definition& definition, const od::SubEntry& entr
 /// Whole expedited downloads of `entry` to the node's own server with values worth trying: 0,
 /// its default, its limits, and for 32-bit entries the default with bit 31 or 30 set (the
 /// "not valid" and RTR / SYNC producer bits of COB-IDs).
-void valueTokens(std::string* out, const od::Definition& definition, const od::Object& object,
-                 const od::SubEntry& entry) {
-  const uint8_t command = expeditedDownload(entry.size);
-  if (command == 0U || (entry.attributes & od::kWritable) == 0U ||
-      (entry.attributes & od::kInRom) != 0U || !od::isNumeric(entry.type)) {
+void valueTokens(std::string* out, const od::Definition& definition, const od::EntryRef& entry) {
+  const uint8_t command = expeditedDownload(entry.size());
+  if (command == 0U || !entry.has(od::kWritable) || entry.inRom() ||
+      !od::isNumeric(entry.type())) {
     return;
   }
   uint32_t values[6] = {0, defaultValue(definition, entry)};
   size_t count = 2;
-  if ((entry.attributes & od::kHasLimits) != 0U && !od::isReal(entry.type)) {
-    values[count++] = static_cast<uint32_t>(entry.limits->low);
-    values[count++] = static_cast<uint32_t>(entry.limits->high);
+  if (entry.row->limits != 0U && !od::isReal(entry.type())) {
+    const od::Limits& limits = definition.limits[entry.row->limits - 1U];
+    values[count++] = static_cast<uint32_t>(limits.low);
+    values[count++] = static_cast<uint32_t>(limits.high);
   }
-  if (entry.size == 4U) {
+  if (entry.size() == 4U) {
     values[count++] = values[1] | 0x80000000U;
     values[count++] = values[1] | 0x40000000U;
   }
   for (size_t i = 0; i < count; ++i) {
-    uint8_t bytes[9] = {kOwnSdo, command, static_cast<uint8_t>(object.index),
-                        static_cast<uint8_t>(object.index >> 8U), entry.subIndex};
+    uint8_t bytes[9] = {kOwnSdo, command, static_cast<uint8_t>(entry.index()),
+                        static_cast<uint8_t>(entry.index() >> 8U), entry.subIndex()};
     for (size_t b = 0; b < 4U; ++b) {
       bytes[5U + b] = static_cast<uint8_t>(values[i] >> (8U * b));
     }
@@ -88,20 +89,17 @@ void valueTokens(std::string* out, const od::Definition& definition, const od::O
 
 std::string fuzzDictionary(const od::Definition& definition) {
   std::string out = "# Costa fuzz dictionary for " + std::string(definition.deviceName) + "\n";
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const od::Object& object = definition.objects[i];
-    const auto low = static_cast<uint8_t>(object.index);
-    const auto high = static_cast<uint8_t>(object.index >> 8U);
-    for (size_t s = 0; s < object.subCount; ++s) {
-      const od::SubEntry& entry = object.subs[s];
-      const uint8_t download = expeditedDownload(entry.size);
-      token(&out, {kOwnSdo, kUpload, low, high, entry.subIndex});
-      if (download == 0U) {  // segmented, block: DOMAINs, strings, 64-bit values
-        token(&out, {kOwnSdo, kSegmentedDownload, low, high, entry.subIndex});
-        token(&out, {kOwnSdo, kBlockUpload, low, high, entry.subIndex, 0x7F});
-      }
-      valueTokens(&out, definition, object, entry);
+  for (const od::EntryRef& entry : od::Entries(definition)) {
+    const auto low = static_cast<uint8_t>(entry.index());
+    const auto high = static_cast<uint8_t>(entry.index() >> 8U);
+    const uint8_t sub = entry.subIndex();
+    const uint8_t download = expeditedDownload(entry.size());
+    token(&out, {kOwnSdo, kUpload, low, high, sub});
+    if (download == 0U) {  // segmented, block: DOMAINs, strings, 64-bit values
+      token(&out, {kOwnSdo, kSegmentedDownload, low, high, sub});
+      token(&out, {kOwnSdo, kBlockUpload, low, high, sub, 0x7F});
     }
+    valueTokens(&out, definition, entry);
   }
   for (const uint8_t command :
        {uint8_t{0x01}, uint8_t{0x02}, uint8_t{0x80}, uint8_t{0x81}, uint8_t{0x82}}) {

@@ -156,28 +156,29 @@ class Session {
     const od::Definition& definition = device_->node().dictionary().definition();
     size_t entries = 0;
     for (size_t i = 0; i < definition.objectCount; ++i) {
-      entries += definition.objects[i].subCount;
+      entries += od::entryCount(definition.objects[i]);
     }
     size_t wanted = event.code % entries;
-    const od::Object* object = definition.objects;
-    while (wanted >= object->subCount) {
-      wanted -= object->subCount;
-      ++object;
+    od::EntryRef entry;
+    for (const od::EntryRef& ref : od::Entries(definition)) {
+      if (wanted-- == 0U) {
+        entry = ref;
+        break;
+      }
     }
-    const od::SubEntry& entry = object->subs[wanted];
     CanFrame frame;
     frame.id = cob::kSdoRxBase + device_->node().nodeId();
     frame.dlc = 8;
     if (event.kind == EventKind::kEntryUpload) {
       frame.data[0] = 0x40;  // initiate upload
     } else {
-      const size_t size = entry.size >= 1U && entry.size <= 4U ? entry.size : 4U;
+      const size_t size = entry.size() >= 1U && entry.size() <= 4U ? entry.size() : 4U;
       frame.data[0] = static_cast<uint8_t>(0x23U | ((4U - size) << 2U));  // expedited, sized
       memcpy(frame.data + 4, event.frame.data, size);
     }
-    frame.data[1] = static_cast<uint8_t>(object->index);
-    frame.data[2] = static_cast<uint8_t>(object->index >> 8U);
-    frame.data[3] = entry.subIndex;
+    frame.data[1] = static_cast<uint8_t>(entry.index());
+    frame.data[2] = static_cast<uint8_t>(entry.index() >> 8U);
+    frame.data[3] = entry.subIndex();
     if (trace_ != nullptr) {
       *trace_ += "  = rx " + describeFrame(frame) + "\n";
     }

@@ -16,8 +16,8 @@ uint32_t groupsOf(const od::Definition& definition) {
   uint32_t groups = 0;
   for (size_t i = 0; i < definition.objectCount; ++i) {
     const od::Object& object = definition.objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      groups |= groupBit(object.subs[s].group);
+    for (size_t r = 0; r < object.rowCount; ++r) {
+      groups |= groupBit(object.rows[r].group);
     }
   }
   return groups & ~groupBit(od::kGroupNone);

@@ -25,14 +25,10 @@ struct DictionaryInstance {
 /// The RAM bytes of every entry of `group`, in dictionary order: what a stored image holds.
 inline std::vector<uint8_t> groupBytes(od::ObjectDictionary& dictionary, uint8_t group) {
   std::vector<uint8_t> bytes;
-  const od::Definition& definition = dictionary.definition();
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const od::Object& object = definition.objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      const uint8_t* address = dictionary.ramAddress(object.subs[s]);
-      if (object.subs[s].group == group && address != nullptr) {
-        bytes.insert(bytes.end(), address, address + object.subs[s].size);
-      }
+  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
+    const uint8_t* address = dictionary.ramAddress(ref);
+    if (ref.group() == group && address != nullptr) {
+      bytes.insert(bytes.end(), address, address + ref.size());
     }
   }
   return bytes;
@@ -42,17 +38,13 @@ inline std::vector<uint8_t> groupBytes(od::ObjectDictionary& dictionary, uint8_t
 /// patterns of two seeds that differ by less than 256 differ in every byte.
 inline void fillGroup(od::ObjectDictionary& dictionary, uint8_t group, unsigned seed) {
   size_t j = 0;
-  const od::Definition& definition = dictionary.definition();
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const od::Object& object = definition.objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      uint8_t* address = dictionary.ramAddress(object.subs[s]);
-      if (object.subs[s].group != group || address == nullptr) {
-        continue;
-      }
-      for (size_t k = 0; k < object.subs[s].size; ++k, ++j) {
-        address[k] = static_cast<uint8_t>(seed * 31U + j * 7U + 1U);
-      }
+  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
+    uint8_t* address = dictionary.ramAddress(ref);
+    if (ref.group() != group || address == nullptr) {
+      continue;
+    }
+    for (size_t k = 0; k < ref.size(); ++k, ++j) {
+      address[k] = static_cast<uint8_t>(seed * 31U + j * 7U + 1U);
     }
   }
 }

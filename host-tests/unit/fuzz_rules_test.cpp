@@ -131,13 +131,13 @@ TEST_F(FuzzRules, DictionaryValuesOutsideTheirDefinitionAreReported) {
   EXPECT_EQ(checkDictionaryValues(dictionary), "");
   const od::EntryRef real = dictionary.find(0x2004, 4);  // REAL32 0..10
   const float nan = __builtin_nanf("");
-  memcpy(dictionary.ramAddress(*real.entry), &nan, sizeof(nan));
+  memcpy(dictionary.ramAddress(real), &nan, sizeof(nan));
   EXPECT_EQ(checkDictionaryValues(dictionary), "dictionary value 0x2004:04: nan outside 0..10");
   const float ten = 10.0F;
-  memcpy(dictionary.ramAddress(*real.entry), &ten, sizeof(ten));
+  memcpy(dictionary.ramAddress(real), &ten, sizeof(ten));
   EXPECT_EQ(checkDictionaryValues(dictionary), "");
   const od::EntryRef label = dictionary.find(0x2006, 0);  // VISIBLE_STRING of 32
-  dictionary.ramAddress(*label.entry)[label.entry->size] = 'x';
+  dictionary.ramAddress(label)[label.size()] = 'x';
   EXPECT_EQ(checkDictionaryValues(dictionary),
             "dictionary value 0x2006:00: string without its terminating zero");
 }

@@ -169,10 +169,10 @@ class GefranDictionary : public ::testing::TestWithParam<Variant> {
     dictionary_.restoreDefaults(0x0000, 0xFFFF);
   }
 
-  const SubEntry& entry(const Expected& row) {
+  EntryRef entry(const Expected& row) {
     const EntryRef ref = dictionary_.find(row.index, row.subIndex);
     EXPECT_TRUE(ref.valid()) << where(row);
-    return *ref.entry;
+    return ref;
   }
 
   static std::string where(const Expected& row) {
@@ -195,46 +195,43 @@ uint64_t typeMaximum(DataType type) {
 }
 
 /// Checks a value in wire form against an entry's limits, without storing it.
-AbortCode checkValue(const ObjectDictionary& dictionary, const SubEntry& entry, uint64_t value) {
+AbortCode checkValue(const ObjectDictionary& dictionary, const EntryRef& entry, uint64_t value) {
   uint8_t wire[4] = {};
-  for (size_t i = 0; i < typeSize(entry.type); ++i) {
+  for (size_t i = 0; i < typeSize(entry.type()); ++i) {
     wire[i] = static_cast<uint8_t>(value >> (8U * i));
   }
-  return dictionary.check(entry, wire, typeSize(entry.type));
+  return dictionary.check(entry, wire, typeSize(entry.type()));
 }
 
 TEST_P(GefranDictionary, EveryEntryHasTheManualsTypeAccessAndGroup) {
   for (const Expected& row : kManual) {
-    const SubEntry& sub = entry(row);
+    const EntryRef sub = entry(row);
     SCOPED_TRACE(where(row));
-    EXPECT_EQ(sub.type, row.type);
-    const uint16_t access = sub.attributes & (kReadable | kWritable | kInRom);
+    EXPECT_EQ(sub.type(), row.type);
+    const uint16_t access = sub.attributes() & (kReadable | kWritable | kInRom);
     switch (row.access) {
       case Access::kRo: EXPECT_EQ(access, kReadable); break;
       case Access::kWo: EXPECT_EQ(access, kWritable); break;
       case Access::kRw: EXPECT_EQ(access, kReadable | kWritable); break;
       case Access::kConst: EXPECT_EQ(access, kReadable | kInRom); break;
     }
-    EXPECT_EQ(sub.attributes & (kRpdoMappable | kTpdoMappable),
+    EXPECT_EQ(sub.attributes() & (kRpdoMappable | kTpdoMappable),
               row.tpdoMappable ? static_cast<unsigned>(kTpdoMappable) : 0U);
-    EXPECT_EQ((sub.attributes & kNodeIdRelative) != 0U, row.nodeIdRelative);
-    EXPECT_EQ(sub.group, row.group);
+    EXPECT_EQ((sub.attributes() & kNodeIdRelative) != 0U, row.nodeIdRelative);
+    EXPECT_EQ(sub.group(), row.group);
   }
 }
 
 TEST_P(GefranDictionary, HoldsNothingBeyondTheManualsEntries) {
   const Definition& definition = *GetParam().definition;
   size_t count = 0;
-  for (uint16_t i = 0; i < definition.objectCount; ++i) {
-    const Object& object = definition.objects[i];
-    for (uint8_t s = 0; s < object.subCount; ++s) {
-      bool listed = false;
-      for (const Expected& row : kManual) {
-        listed = listed || (row.index == object.index && row.subIndex == object.subs[s].subIndex);
-      }
-      EXPECT_TRUE(listed) << "0x" << std::hex << object.index << ":" << +object.subs[s].subIndex;
-      ++count;
+  for (const EntryRef& ref : Entries(definition)) {
+    bool listed = false;
+    for (const Expected& row : kManual) {
+      listed = listed || (row.index == ref.index() && row.subIndex == ref.subIndex());
     }
+    EXPECT_TRUE(listed) << "0x" << std::hex << ref.index() << ":" << +ref.subIndex();
+    ++count;
   }
   EXPECT_EQ(count, sizeof(kManual) / sizeof(kManual[0]));
   EXPECT_FALSE(dictionary_.find(0x1800, 4).valid());  // E9: reserved, not implemented
@@ -243,7 +240,7 @@ TEST_P(GefranDictionary, HoldsNothingBeyondTheManualsEntries) {
 
 TEST_P(GefranDictionary, DefaultsAreTheManuals) {
   for (const Expected& row : kManual) {
-    const SubEntry& sub = entry(row);
+    const EntryRef sub = entry(row);
     SCOPED_TRACE(where(row));
     if (row.type == DataType::kVisibleString) {
       const char* expected = row.text != nullptr ? row.text : GetParam().name;
@@ -259,14 +256,15 @@ TEST_P(GefranDictionary, DefaultsAreTheManuals) {
 
 TEST_P(GefranDictionary, LimitsAreTheManualsAndRefuseTheValuesJustOutside) {
   for (const Expected& row : kManual) {
-    const SubEntry& sub = entry(row);
+    const EntryRef sub = entry(row);
     SCOPED_TRACE(where(row));
-    ASSERT_EQ((sub.attributes & kHasLimits) != 0U, row.limited);
+    ASSERT_EQ((sub.attributes() & kHasLimits) != 0U, row.limited);
     if (!row.limited) {
       continue;
     }
-    EXPECT_EQ(sub.limits->low, row.low);
-    EXPECT_EQ(sub.limits->high, row.high);
+    const Limits& limits = GetParam().definition->limits[sub.row->limits - 1U];
+    EXPECT_EQ(limits.low, row.low);
+    EXPECT_EQ(limits.high, row.high);
     EXPECT_EQ(checkValue(dictionary_, sub, row.low), AbortCode::kNone);
     EXPECT_EQ(checkValue(dictionary_, sub, row.high), AbortCode::kNone);
     if (row.low > 0U) {

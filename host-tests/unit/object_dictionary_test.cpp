@@ -28,12 +28,42 @@ TEST_F(ObjectDictionaryTest, ObjectsAreSortedAndEveryEntryIsFound) {
     if (i > 0) {
       EXPECT_LT(definition.objects[i - 1].index, object.index);
     }
-    for (uint8_t s = 0; s < object.subCount; ++s) {
-      EntryRef ref;
-      EXPECT_EQ(dictionary_.find(object.index, object.subs[s].subIndex, &ref), AbortCode::kNone);
-      EXPECT_EQ(ref.entry, &object.subs[s]);
+    for (uint8_t r = 0; r < object.rowCount; ++r) {
+      const SubEntry& row = object.rows[r];
+      if (r > 0) {
+        const SubEntry& previous = object.rows[r - 1];
+        EXPECT_EQ(previous.subIndex + previous.count, row.subIndex);  // no gap, no overlap
+      }
+      for (unsigned k = 0; k < row.count; ++k) {
+        EntryRef ref;
+        const auto sub = static_cast<uint8_t>(row.subIndex + k);
+        EXPECT_EQ(dictionary_.find(object.index, sub, &ref), AbortCode::kNone);
+        EXPECT_EQ(ref.row, &row);
+        EXPECT_EQ(ref.subIndex(), sub);
+        EXPECT_EQ(ref.offset(), row.offset + k * row.size);
+      }
     }
   }
+}
+
+TEST_F(ObjectDictionaryTest, RowsStandForRunsOfLikeSubIndices) {
+  // 0x1016 holds the number of entries and three consumer times: two rows.
+  const Object* consumers = dictionary_.findObject(0x1016);
+  ASSERT_NE(consumers, nullptr);
+  EXPECT_EQ(consumers->rowCount, 2U);
+  EXPECT_EQ(entryCount(*consumers), 4U);
+  values_.x1016_consumer_heartbeat_time.item[2] = 0x00050064;
+  EXPECT_EQ(dictionary_.readUnsigned(0x1016, 3, 0), 0x00050064U);
+  size_t visited = 0;
+  for (const EntryRef& ref : Entries(gen::example::kDefinition)) {
+    EXPECT_TRUE(ref.valid());
+    ++visited;
+  }
+  size_t expected = 0;
+  for (uint16_t i = 0; i < gen::example::kDefinition.objectCount; ++i) {
+    expected += entryCount(gen::example::kDefinition.objects[i]);
+  }
+  EXPECT_EQ(visited, expected);
 }
 
 TEST_F(ObjectDictionaryTest, MissingObjectsAndSubIndicesHaveTheirAbortCodes) {
@@ -51,7 +81,7 @@ TEST_F(ObjectDictionaryTest, DefaultsAreInRamAndReachableByName) {
   EXPECT_EQ(values_.x2005_table.item[3], 0x1234U);
   EXPECT_STREQ(values_.x2006_device_label, "unnamed");
   EXPECT_EQ(dictionary_.readUnsigned(0x2000, 0, 0), 1000U);
-  EXPECT_EQ(dictionary_.readSigned(*dictionary_.find(0x2004, 3).entry), -100000);
+  EXPECT_EQ(dictionary_.readSigned(dictionary_.find(0x2004, 3)), -100000);
 }
 
 TEST_F(ObjectDictionaryTest, NodeIdRelativeConstantsFollowTheNodeId) {
@@ -59,7 +89,7 @@ TEST_F(ObjectDictionaryTest, NodeIdRelativeConstantsFollowTheNodeId) {
   dictionary_.setNodeId(0x7F);
   EXPECT_EQ(dictionary_.readUnsigned(0x1200, 2, 0), 0x5FFU);
   uint8_t wire[4] = {};
-  EXPECT_EQ(dictionary_.read(*dictionary_.find(0x1200, 1).entry, 0, wire, 4), 4U);
+  EXPECT_EQ(dictionary_.read(dictionary_.find(0x1200, 1), 0, wire, 4), 4U);
   EXPECT_EQ(wire[0], 0x7FU);
   EXPECT_EQ(wire[1], 0x06U);
 }
@@ -67,15 +97,15 @@ TEST_F(ObjectDictionaryTest, NodeIdRelativeConstantsFollowTheNodeId) {
 TEST_F(ObjectDictionaryTest, ConstantsAreNotInRamAndCannotBeWritten) {
   const EntryRef name = dictionary_.find(0x1008, 0);
   ASSERT_TRUE(name.valid());
-  EXPECT_NE(name.entry->attributes & kInRom, 0U);
-  EXPECT_EQ(dictionary_.ramAddress(*name.entry), nullptr);
+  EXPECT_NE(name.attributes() & kInRom, 0U);
+  EXPECT_EQ(dictionary_.ramAddress(name), nullptr);
   const uint8_t data[2] = {'x', 0};
-  EXPECT_EQ(dictionary_.write(*name.entry, data, 1), AbortCode::kWriteOfReadOnly);
-  EXPECT_EQ(dictionary_.valueSize(*name.entry), 13U);
+  EXPECT_EQ(dictionary_.write(name, data, 1), AbortCode::kWriteOfReadOnly);
+  EXPECT_EQ(dictionary_.valueSize(name), 13U);
 }
 
 TEST_F(ObjectDictionaryTest, ChecksLengthsAndLimitsBeforeStoring) {
-  const SubEntry& setpoint = *dictionary_.find(0x2000, 0).entry;
+  const EntryRef setpoint = dictionary_.find(0x2000, 0);
   const uint8_t tooHigh[4] = {0xA1, 0x86, 0x01, 0x00};
   const uint8_t ok[4] = {0x10, 0x27, 0x00, 0x00};
   EXPECT_EQ(dictionary_.write(setpoint, tooHigh, 4), AbortCode::kValueTooHigh);
@@ -87,13 +117,13 @@ TEST_F(ObjectDictionaryTest, ChecksLengthsAndLimitsBeforeStoring) {
 }
 
 TEST_F(ObjectDictionaryTest, RealLimitsRejectNotANumber) {
-  const SubEntry& gain = *dictionary_.find(0x2004, 4).entry;
+  const EntryRef gain = dictionary_.find(0x2004, 4);
   const uint8_t nan[4] = {0x00, 0x00, 0xC0, 0x7F};
   EXPECT_EQ(dictionary_.write(gain, nan, 4), AbortCode::kInvalidValue);
 }
 
 TEST_F(ObjectDictionaryTest, StringsArePaddedAndReadUpToTheirLength) {
-  const SubEntry& label = *dictionary_.find(0x2006, 0).entry;
+  const EntryRef label = dictionary_.find(0x2006, 0);
   const uint8_t text[3] = {'a', 'b', 'c'};
   EXPECT_EQ(dictionary_.write(label, text, 3), AbortCode::kNone);
   EXPECT_STREQ(values_.x2006_device_label, "abc");
@@ -116,7 +146,7 @@ TEST_F(ObjectDictionaryTest, RestoresRangesAndGroups) {
 
 TEST_F(ObjectDictionaryTest, AttributesFollowTheAccessTypes) {
   const auto attributes = [&](uint16_t index, uint8_t sub) {
-    return dictionary_.find(index, sub).entry->attributes;
+    return dictionary_.find(index, sub).attributes();
   };
   EXPECT_EQ(attributes(0x2001, 0) & (kReadable | kWritable), kReadable);  // ro
   EXPECT_EQ(attributes(0x2002, 0) & (kReadable | kWritable), kWritable);  // wo

@@ -16,7 +16,7 @@ void writeWire(od::ObjectDictionary& dictionary, uint16_t index, uint8_t subInde
                const std::vector<uint8_t>& wire) {
   const od::EntryRef ref = dictionary.find(index, subIndex);
   ASSERT_TRUE(ref.valid());
-  ASSERT_EQ(dictionary.write(*ref.entry, wire.data(), wire.size()), AbortCode::kNone);
+  ASSERT_EQ(dictionary.write(ref, wire.data(), wire.size()), AbortCode::kNone);
 }
 
 using ParameterStoreTest = ExampleStoreTest;

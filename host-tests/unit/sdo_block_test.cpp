@@ -15,7 +15,7 @@ class SdoBlock : public ExampleNodeTest {
     const od::ObjectDictionary& dictionary = bus_.node().dictionary();
     const od::EntryRef ref = dictionary.find(0x2006, 0);
     uint8_t text[64] = {};
-    const size_t length = dictionary.read(*ref.entry, 0, text, sizeof(text));
+    const size_t length = dictionary.read(ref, 0, text, sizeof(text));
     return std::string(reinterpret_cast<const char*>(text), length);
   }
 };

@@ -78,7 +78,7 @@ TEST_F(SdoSegmented, DownloadsAStringWithSizeIndicated) {
   const od::EntryRef label = dictionary.find(0x2006, 0);
   ASSERT_TRUE(label.valid());
   uint8_t text[40] = {};
-  ASSERT_EQ(dictionary.read(*label.entry, 0, text, sizeof(text)), 12U);
+  ASSERT_EQ(dictionary.read(label, 0, text, sizeof(text)), 12U);
   EXPECT_EQ(std::memcmp(text, "Hello Costa!", 12), 0);
 }
 

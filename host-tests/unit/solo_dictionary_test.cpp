@@ -171,9 +171,9 @@ class SoloDictionaryTest : public ::testing::Test {
     dictionary_.setNodeId(1);
     dictionary_.restoreDefaults(0x0000, 0xFFFF);
   }
-  int64_t value(const SubEntry& entry) const {
-    return isSigned(entry.type) ? dictionary_.readSigned(entry)
-                                : static_cast<int64_t>(dictionary_.readUnsigned(entry));
+  int64_t value(const EntryRef& entry) const {
+    return isSigned(entry.type()) ? dictionary_.readSigned(entry)
+                                  : static_cast<int64_t>(dictionary_.readUnsigned(entry));
   }
   gen::solo::Values values_{};
   ObjectDictionary dictionary_;
@@ -185,19 +185,19 @@ TEST_F(SoloDictionaryTest, EveryEntryOfTheManualHasItsTypeAccessLimitsAndDefault
                                     << std::dec << " (manual line " << row.line << ")");
     const EntryRef ref = dictionary_.find(row.index, row.sub);
     ASSERT_TRUE(ref.valid());
-    const SubEntry& entry = *ref.entry;
-    EXPECT_EQ(entry.type, row.type);
-    EXPECT_EQ(entry.attributes & ~kHasLimits, expectedAttributes(row.access, row.pdo));
-    EXPECT_EQ(entry.group, row.group);
-    EXPECT_EQ(value(entry), row.value);
+    EXPECT_EQ(ref.type(), row.type);
+    EXPECT_EQ(ref.attributes() & ~kHasLimits, expectedAttributes(row.access, row.pdo));
+    EXPECT_EQ(ref.group(), row.group);
+    EXPECT_EQ(value(ref), row.value);
     if (row.low == kNoLimit) {
-      EXPECT_EQ(entry.attributes & kHasLimits, 0U);
+      EXPECT_EQ(ref.attributes() & kHasLimits, 0U);
       continue;
     }
-    ASSERT_NE(entry.attributes & kHasLimits, 0U);
-    ASSERT_NE(entry.limits, nullptr);
-    EXPECT_EQ(static_cast<int64_t>(entry.limits->low), row.low);
-    EXPECT_EQ(static_cast<int64_t>(entry.limits->high), row.high);
+    ASSERT_NE(ref.attributes() & kHasLimits, 0U);
+    ASSERT_NE(ref.row->limits, 0U);
+    const Limits& limits = gen::solo::kDefinition.limits[ref.row->limits - 1U];
+    EXPECT_EQ(static_cast<int64_t>(limits.low), row.low);
+    EXPECT_EQ(static_cast<int64_t>(limits.high), row.high);
   }
 }
 
@@ -208,11 +208,8 @@ TEST_F(SoloDictionaryTest, HoldsNothingTheManualDoesNotList) {
   }
   std::set<std::pair<uint16_t, uint8_t>> actual;
   const Definition& definition = gen::solo::kDefinition;
-  for (uint16_t i = 0; i < definition.objectCount; ++i) {
-    const Object& object = definition.objects[i];
-    for (uint8_t s = 0; s < object.subCount; ++s) {
-      actual.insert({object.index, object.subs[s].subIndex});
-    }
+  for (const EntryRef& ref : Entries(definition)) {
+    actual.insert({ref.index(), ref.subIndex()});
   }
   EXPECT_EQ(actual, expected);
   EXPECT_EQ(definition.objectCount, 87U);  // 4 + 12 communication, 71 manufacturer objects
@@ -228,21 +225,22 @@ TEST_F(SoloDictionaryTest, LimitsAcceptTheirBoundsAndRejectTheNextValue) {
       continue;
     }
     SCOPED_TRACE(testing::Message() << std::hex << "0x" << row.index);
-    const SubEntry& entry = *dictionary_.find(row.index, row.sub).entry;
-    const int64_t typeMin = isSigned(entry.type) ? INT32_MIN : 0;
-    const int64_t typeMax = isSigned(entry.type) ? INT32_MAX : UINT32_MAX;
-    EXPECT_EQ(dictionary_.write(entry, wire(row.low, entry.size).data(), entry.size),
+    const EntryRef entry = dictionary_.find(row.index, row.sub);
+    const size_t size = entry.size();
+    const int64_t typeMin = isSigned(entry.type()) ? INT32_MIN : 0;
+    const int64_t typeMax = isSigned(entry.type()) ? INT32_MAX : UINT32_MAX;
+    EXPECT_EQ(dictionary_.write(entry, wire(row.low, size).data(), size),
               AbortCode::kNone);
     EXPECT_EQ(value(entry), row.low);
-    EXPECT_EQ(dictionary_.write(entry, wire(row.high, entry.size).data(), entry.size),
+    EXPECT_EQ(dictionary_.write(entry, wire(row.high, size).data(), size),
               AbortCode::kNone);
     EXPECT_EQ(value(entry), row.high);
     if (row.low > typeMin) {
-      EXPECT_EQ(dictionary_.write(entry, wire(row.low - 1, entry.size).data(), entry.size),
+      EXPECT_EQ(dictionary_.write(entry, wire(row.low - 1, size).data(), size),
                 AbortCode::kValueTooLow);
     }
     if (row.high < typeMax) {
-      EXPECT_EQ(dictionary_.write(entry, wire(row.high + 1, entry.size).data(), entry.size),
+      EXPECT_EQ(dictionary_.write(entry, wire(row.high + 1, size).data(), size),
                 AbortCode::kValueTooHigh);
     }
     EXPECT_EQ(value(entry), row.high);  // a refused write keeps the value
@@ -257,15 +255,13 @@ TEST_F(SoloDictionaryTest, TheObjectsOfThePdoTableAreMappable) {
   std::set<uint16_t> receivable;
   std::set<uint16_t> transmittable;
   const Definition& definition = gen::solo::kDefinition;
-  for (uint16_t i = 0; i < definition.objectCount; ++i) {
-    const Object& object = definition.objects[i];
-    for (uint8_t s = 0; s < object.subCount; ++s) {
-      const uint16_t attributes = object.subs[s].attributes;
-      if ((attributes & kRpdoMappable) != 0U) {
-        receivable.insert(object.index);
+  for (const EntryRef& ref : Entries(definition)) {
+    {
+      if (ref.has(kRpdoMappable)) {
+        receivable.insert(ref.index());
       }
-      if ((attributes & kTpdoMappable) != 0U) {
-        transmittable.insert(object.index);
+      if (ref.has(kTpdoMappable)) {
+        transmittable.insert(ref.index());
       }
     }
   }
@@ -286,13 +282,13 @@ TEST_F(SoloDictionaryTest, TheObjectsOfThePdoTableAreMappable) {
 TEST_F(SoloDictionaryTest, SfxtDefaultsTravelAsRawFixedPoint) {
   uint8_t bytes[4] = {};
   // 0x3003 Current Limit, default 32 A = 0x00400000.
-  ASSERT_EQ(dictionary_.read(*dictionary_.find(0x3003, 0).entry, 0, bytes, 4), 4U);
+  ASSERT_EQ(dictionary_.read(dictionary_.find(0x3003, 0), 0, bytes, 4), 4U);
   EXPECT_EQ(wire(0x00400000, 4), std::vector<uint8_t>(bytes, bytes + 4));
   // 0x3021 injection amplitude, default 0.15 = 19661 = 0x00004CCD.
-  ASSERT_EQ(dictionary_.read(*dictionary_.find(0x3021, 0).entry, 0, bytes, 4), 4U);
+  ASSERT_EQ(dictionary_.read(dictionary_.find(0x3021, 0), 0, bytes, 4), 4U);
   EXPECT_EQ(wire(0x00004CCD, 4), std::vector<uint8_t>(bytes, bytes + 4));
   // 0x3023 observer gain, default 50 = 0x00640000.
-  ASSERT_EQ(dictionary_.read(*dictionary_.find(0x3023, 0).entry, 0, bytes, 4), 4U);
+  ASSERT_EQ(dictionary_.read(dictionary_.find(0x3023, 0), 0, bytes, 4), 4U);
   EXPECT_EQ(wire(0x00640000, 4), std::vector<uint8_t>(bytes, bytes + 4));
 }
 

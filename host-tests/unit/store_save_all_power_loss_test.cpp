@@ -40,16 +40,11 @@ struct StoredValue {
 /// Every entry of `group`, value by value, in dictionary order.
 std::vector<StoredValue> groupValues(od::ObjectDictionary& dictionary, uint8_t group) {
   std::vector<StoredValue> values;
-  const od::Definition& definition = dictionary.definition();
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const od::Object& object = definition.objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      const od::SubEntry& entry = object.subs[s];
-      const uint8_t* address = dictionary.ramAddress(entry);
-      if (entry.group == group && address != nullptr) {
-        values.push_back(
-            {object.index, entry.subIndex, std::vector<uint8_t>(address, address + entry.size)});
-      }
+  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
+    const uint8_t* address = dictionary.ramAddress(ref);
+    if (ref.group() == group && address != nullptr) {
+      values.push_back(
+          {ref.index(), ref.subIndex(), std::vector<uint8_t>(address, address + ref.size())});
     }
   }
   return values;

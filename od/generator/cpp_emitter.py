@@ -142,6 +142,30 @@ def _limits(device: Device) -> tuple:
     return rows, row_of
 
 
+_MERGEABLE_KINDS = ("bool", "signed", "unsigned", "real")
+
+
+def rows_of(obj, row_of: dict) -> list:
+    """The rows of an object: runs of consecutive sub-indices that share every property of a
+    SubEntry and store fixed-size values back to back (array items, record members of one
+    type). Each row is a list of entries."""
+    rows = []
+    for entry in obj.entries:
+        if rows:
+            last = rows[-1][-1]
+            same = (entry.sub == last.sub + 1 and len(rows[-1]) < 255
+                    and entry.data_type is last.data_type
+                    and entry.data_type.kind in _MERGEABLE_KINDS
+                    and entry.attributes == last.attributes and entry.size == last.size
+                    and entry.group == last.group
+                    and row_of.get((entry.index, entry.sub)) == row_of.get((last.index, last.sub)))
+            if same:
+                rows[-1].append(entry)
+                continue
+        rows.append([entry])
+    return rows
+
+
 def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
     lines = [_banner(name, source).rstrip("\n"), f'#include "{name}_od.hpp"', "",
              "#include <stddef.h>", "", f"namespace costa::gen::{name} {{", "namespace {", ""]
@@ -153,25 +177,43 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
         for low, high in limit_rows:
             lines.append(f"{_INDENT * 2}{{{pattern_literal(low)}, {pattern_literal(high)}}},")
         lines += ["};", ""]
+    run_checks = []
+    object_rows = {}
     for obj in device.objects:
+        rows = rows_of(obj, row_of)
+        object_rows[obj.index] = len(rows)
         lines.append(f"// 0x{obj.index:04X} {comment_text(obj.name)}")
-        lines.append(f"constexpr costa::od::SubEntry kSubs{obj.index:04X}[] = {{")
-        for entry in obj.entries:
-            key = (entry.index, entry.sub)
-            limits = f"&kLimits[{row_of[key]}]" if key in row_of else "nullptr"
-            lines.append(f"{_INDENT * 2}{{{entry.sub}, costa::od::DataType::"
-                         f"{entry.data_type.enumerator}, {_attributes_text(entry)}, "
-                         f"{entry.size}, {_group_text(entry.group)}, "
-                         f"{layout.offsets[key]}, {limits}}},")
+        lines.append(f"constexpr costa::od::SubEntry kRows{obj.index:04X}[] = {{")
+        for row in rows:
+            first = row[0]
+            key = (first.index, first.sub)
+            limits = f"{row_of[key] + 1}" if key in row_of else "0"
+            lines.append(f"{_INDENT * 2}{{{first.sub}, {len(row)}, costa::od::DataType::"
+                         f"{first.data_type.enumerator}, {_attributes_text(first)}, "
+                         f"{first.size}, {_group_text(first.group)}, {limits}, "
+                         f"{layout.offsets[key]}}},")
+            for k, entry in enumerate(row[1:], start=1):
+                actual = layout.offsets[(entry.index, entry.sub)]
+                if not actual.startswith(layout.offsets[key]):  # not an item of one array
+                    run_checks.append((actual, f"{layout.offsets[key]} + {k} * {first.size}",
+                                       f"0x{entry.index:04X}:{entry.sub}"))
         lines += ["};", ""]
     lines.append("constexpr costa::od::Object kObjects[] = {")
     for obj in device.objects:
         lines.append(f"{_INDENT * 2}{{0x{obj.index:04X}, costa::od::ObjectCode::"
-                     f"{OBJECT_CODES[obj.code]}, {len(obj.entries)}, kSubs{obj.index:04X}}},")
+                     f"{OBJECT_CODES[obj.code]}, {object_rows[obj.index]}, "
+                     f"kRows{obj.index:04X}}},")
     lines += ["};", ""]
     for check in layout.size_checks:
         lines.append(f"static_assert({check.expression} == {check.size}, "
                      f"\"size of {check.label}\");")
+    for actual, expected, label in run_checks:
+        lines.append(f"static_assert({actual} == {expected}, \"{label} follows the value "
+                     f"before it\");")
+    lines.append("static_assert(sizeof(Values) <= 0xFFFFU && sizeof(Constants) <= 0xFFFFU, "
+                 "\"value offsets are 16-bit: keep each block under 64 KiB\");")
+    real_limits = any(e.has_limits and e.data_type.kind == "real"
+                      for e in device.all_entries())
     lines += ["", "}  // namespace", "",
               "const costa::od::Definition kDefinition = {",
               f"{_INDENT * 2}kObjects,",
@@ -181,6 +223,8 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
               f"{_INDENT * 2}sizeof(Values),",
               f"{_INDENT * 2}0x{layout_id(device):08X}U,",
               f"{_INDENT * 2}{text_literal(device.product_name)},",
+              f"{_INDENT * 2}{'kLimits' if limit_rows else 'nullptr'},",
+              f"{_INDENT * 2}{'&costa::od::checkRealLimits' if real_limits else 'nullptr'},",
               "};", "", f"}}  // namespace costa::gen::{name}", ""]
     return "\n".join(lines)
 

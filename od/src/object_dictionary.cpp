@@ -48,74 +48,55 @@ void storeNative(uint8_t* address, uint64_t raw, size_t size) noexcept {
   }
 }
 
-double toDouble(DataType type, uint64_t raw) noexcept {
-  if (type == DataType::kReal32) {
-    float f = 0.0F;
-    const auto bits = static_cast<uint32_t>(raw);
-    memcpy(&f, &bits, 4);
-    return static_cast<double>(f);
-  }
-  double d = 0.0;
-  memcpy(&d, &raw, 8);
-  return d;
-}
-
-// Compares a candidate numeric value (raw wire bits) with the entry's limits.
-AbortCode checkLimits(const SubEntry& entry, uint64_t raw) noexcept {
-  const Limits& limits = *entry.limits;
-  if (isSigned(entry.type)) {
-    const int64_t value = signExtend(raw, entry.size);
+// Compares a candidate integer value (raw wire bits) with the entry's limits.
+AbortCode checkIntegerLimits(const EntryRef& ref, const Limits& limits, uint64_t raw) noexcept {
+  if (isSigned(ref.type())) {
+    const int64_t value = signExtend(raw, ref.size());
     if (value > static_cast<int64_t>(limits.high)) {
       return AbortCode::kValueTooHigh;
     }
-    if (value < static_cast<int64_t>(limits.low)) {
-      return AbortCode::kValueTooLow;
-    }
-  } else if (isReal(entry.type)) {
-    const double value = toDouble(entry.type, raw);
-    const double low = toDouble(DataType::kReal64, limits.low);
-    const double high = toDouble(DataType::kReal64, limits.high);
-    if (value != value) {  // NaN is in no range
-      return AbortCode::kInvalidValue;
-    }
-    if (value > high) {
-      return AbortCode::kValueTooHigh;
-    }
-    if (value < low) {
-      return AbortCode::kValueTooLow;
-    }
-  } else {
-    if (raw > limits.high) {
-      return AbortCode::kValueTooHigh;
-    }
-    if (raw < limits.low) {
-      return AbortCode::kValueTooLow;
-    }
+    return value < static_cast<int64_t>(limits.low) ? AbortCode::kValueTooLow : AbortCode::kNone;
   }
-  return AbortCode::kNone;
+  if (raw > limits.high) {
+    return AbortCode::kValueTooHigh;
+  }
+  return raw < limits.low ? AbortCode::kValueTooLow : AbortCode::kNone;
+}
+
+constexpr bool nodeIdConstant(uint8_t attributes) noexcept {
+  return (attributes & (kNodeIdRelative | kInRom)) == (kNodeIdRelative | kInRom);
 }
 
 }  // namespace
+
+EntryRef locate(const Object& object, uint8_t sub) noexcept {
+  for (uint8_t i = 0; i < object.rowCount; ++i) {
+    const SubEntry& row = object.rows[i];
+    if (sub >= row.subIndex && static_cast<unsigned>(sub - row.subIndex) < row.count) {
+      return EntryRef{&object, &row, sub};
+    }
+  }
+  return EntryRef{};
+}
 
 ObjectDictionary::ObjectDictionary(const Definition& definition, void* values) noexcept
     : definition_(&definition), values_(static_cast<uint8_t*>(values)) {}
 
 const Object* ObjectDictionary::findObject(uint16_t index) const noexcept {
-  size_t low = 0;
-  size_t high = definition_->objectCount;
-  while (low < high) {
-    const size_t middle = low + (high - low) / 2U;
-    const Object& candidate = definition_->objects[middle];
-    if (candidate.index == index) {
-      return &candidate;
-    }
-    if (candidate.index < index) {
-      low = middle + 1U;
+  const Object* low = definition_->objects;
+  size_t count = definition_->objectCount;
+  while (count > 0U) {
+    const size_t half = count / 2U;
+    const Object* middle = low + half;
+    if (middle->index < index) {
+      low = middle + 1;
+      count -= half + 1U;
     } else {
-      high = middle;
+      count = half;
     }
   }
-  return nullptr;
+  return low != definition_->objects + definition_->objectCount && low->index == index ? low
+                                                                                      : nullptr;
 }
 
 AbortCode ObjectDictionary::find(uint16_t index, uint8_t subIndex, EntryRef* out) const noexcept {
@@ -123,68 +104,54 @@ AbortCode ObjectDictionary::find(uint16_t index, uint8_t subIndex, EntryRef* out
   if (object == nullptr) {
     return AbortCode::kNoObject;
   }
-  size_t low = 0;
-  size_t high = object->subCount;
-  while (low < high) {
-    const size_t middle = low + (high - low) / 2U;
-    const SubEntry& candidate = object->subs[middle];
-    if (candidate.subIndex == subIndex) {
-      out->object = object;
-      out->entry = &candidate;
-      return AbortCode::kNone;
-    }
-    if (candidate.subIndex < subIndex) {
-      low = middle + 1U;
-    } else {
-      high = middle;
-    }
+  const EntryRef ref = locate(*object, subIndex);
+  if (!ref.valid()) {
+    return AbortCode::kNoSubIndex;
   }
-  return AbortCode::kNoSubIndex;
+  *out = ref;
+  return AbortCode::kNone;
 }
 
 EntryRef ObjectDictionary::find(uint16_t index, uint8_t subIndex) const noexcept {
-  EntryRef ref;
-  if (find(index, subIndex, &ref) != AbortCode::kNone) {
-    return EntryRef{};
-  }
-  return ref;
+  const Object* object = findObject(index);
+  return object == nullptr ? EntryRef{} : locate(*object, subIndex);
 }
 
-const uint8_t* ObjectDictionary::address(const SubEntry& entry) const noexcept {
-  if (entry.type == DataType::kDomain) {
+const uint8_t* ObjectDictionary::address(const EntryRef& ref) const noexcept {
+  if (ref.type() == DataType::kDomain) {
     return nullptr;
   }
-  if ((entry.attributes & kInRom) != 0U) {
-    return static_cast<const uint8_t*>(definition_->constants) + entry.offset;
+  if (ref.inRom()) {
+    return static_cast<const uint8_t*>(definition_->constants) + ref.offset();
   }
-  return values_ + entry.offset;
+  return values_ + ref.offset();
 }
 
-uint8_t* ObjectDictionary::ramAddress(const SubEntry& entry) noexcept {
-  if (entry.type == DataType::kDomain || (entry.attributes & kInRom) != 0U) {
+uint8_t* ObjectDictionary::ramAddress(const EntryRef& ref) noexcept {
+  if (ref.type() == DataType::kDomain || ref.inRom()) {
     return nullptr;
   }
-  return values_ + entry.offset;
+  return values_ + ref.offset();
 }
 
-size_t ObjectDictionary::valueSize(const SubEntry& entry) const noexcept {
-  if (entry.type == DataType::kDomain) {
+size_t ObjectDictionary::valueSize(const EntryRef& ref) const noexcept {
+  if (ref.type() == DataType::kDomain) {
     return 0;
   }
-  if (entry.type == DataType::kVisibleString) {
-    const uint8_t* text = address(entry);
+  if (ref.type() == DataType::kVisibleString) {
+    const uint8_t* text = address(ref);
     size_t length = 0;
-    while (length < entry.size && text[length] != 0U) {
+    while (length < ref.size() && text[length] != 0U) {
       ++length;
     }
     return length;
   }
-  return entry.size;
+  return ref.size();
 }
 
-size_t ObjectDictionary::read(const SubEntry& entry, size_t offset, uint8_t* destination,
+size_t ObjectDictionary::read(const EntryRef& ref, size_t offset, uint8_t* destination,
                               size_t capacity) const noexcept {
-  const size_t total = valueSize(entry);
+  const size_t total = valueSize(ref);
   if (offset >= total) {
     return 0;
   }
@@ -192,98 +159,103 @@ size_t ObjectDictionary::read(const SubEntry& entry, size_t offset, uint8_t* des
   if (count > capacity) {
     count = capacity;
   }
-  if (isNumeric(entry.type)) {
+  const uint8_t* source = address(ref);
+  if (isNumeric(ref.type()) && (!kLittleEndianHost || nodeIdConstant(ref.attributes()))) {
     uint8_t wire[8];
-    uint64_t raw = loadNative(address(entry), entry.size);
-    if ((entry.attributes & (kNodeIdRelative | kInRom)) == (kNodeIdRelative | kInRom)) {
+    uint64_t raw = loadNative(source, ref.size());
+    if (nodeIdConstant(ref.attributes())) {
       raw += nodeId_;
     }
-    storeLittleEndian(wire, raw, entry.size);
+    storeLittleEndian(wire, raw, ref.size());
     memcpy(destination, wire + offset, count);
   } else {
-    memcpy(destination, address(entry) + offset, count);
+    memcpy(destination, source + offset, count);
   }
   return count;
 }
 
-AbortCode ObjectDictionary::check(const SubEntry& entry, const uint8_t* source,
+AbortCode ObjectDictionary::check(const EntryRef& ref, const uint8_t* source,
                                   size_t length) const noexcept {
-  if ((entry.attributes & kInRom) != 0U) {
+  if (ref.inRom()) {
     return AbortCode::kWriteOfReadOnly;
   }
-  if (entry.type == DataType::kDomain) {
+  const DataType type = ref.type();
+  if (type == DataType::kDomain) {
     return AbortCode::kCannotStore;
   }
-  if (entry.type == DataType::kVisibleString) {
-    return length > entry.size ? AbortCode::kLengthTooHigh : AbortCode::kNone;
-  }
-  if (length > entry.size) {
+  if (length > ref.size()) {
     return AbortCode::kLengthTooHigh;
   }
-  if (length < entry.size) {
-    return AbortCode::kLengthTooLow;
-  }
-  if (!isNumeric(entry.type)) {
+  if (type == DataType::kVisibleString) {
     return AbortCode::kNone;
   }
-  const uint64_t raw = loadLittleEndian(source, entry.size);
-  if (entry.type == DataType::kBoolean && raw > 1U) {
-    return AbortCode::kInvalidValue;
+  if (length < ref.size()) {
+    return AbortCode::kLengthTooLow;
   }
-  if ((entry.attributes & kHasLimits) != 0U) {
-    return checkLimits(entry, raw);
+  if (type == DataType::kBoolean) {
+    return source[0] > 1U ? AbortCode::kInvalidValue : AbortCode::kNone;
   }
-  return AbortCode::kNone;
+  if (ref.row->limits == 0U) {
+    return AbortCode::kNone;
+  }
+  const Limits& limits = definition_->limits[ref.row->limits - 1U];
+  const uint64_t raw = loadLittleEndian(source, ref.size());
+  if (isReal(type)) {
+    return definition_->realLimits != nullptr ? definition_->realLimits(type, raw, limits)
+                                              : AbortCode::kNone;
+  }
+  return checkIntegerLimits(ref, limits, raw);
 }
 
-AbortCode ObjectDictionary::write(const SubEntry& entry, const uint8_t* source,
+AbortCode ObjectDictionary::write(const EntryRef& ref, const uint8_t* source,
                                   size_t length) noexcept {
-  const AbortCode verdict = check(entry, source, length);
+  const AbortCode verdict = check(ref, source, length);
   if (verdict != AbortCode::kNone) {
     return verdict;
   }
-  uint8_t* target = values_ + entry.offset;
-  if (isNumeric(entry.type)) {
-    storeNative(target, loadLittleEndian(source, entry.size), entry.size);
+  uint8_t* target = values_ + ref.offset();
+  if (isNumeric(ref.type()) && !kLittleEndianHost) {
+    storeNative(target, loadLittleEndian(source, ref.size()), ref.size());
   } else {
     memcpy(target, source, length);
-    if (length < entry.size) {
-      memset(target + length, 0, entry.size - length);
+    if (length < ref.size()) {
+      memset(target + length, 0, ref.size() - length);
     }
   }
   return AbortCode::kNone;
 }
 
-uint64_t ObjectDictionary::readUnsigned(const SubEntry& entry) const noexcept {
-  if (!isSigned(entry.type) && !isUnsigned(entry.type)) {
+uint64_t ObjectDictionary::readUnsigned(const EntryRef& ref) const noexcept {
+  const DataType type = ref.type();
+  if (!isSigned(type) && !isUnsigned(type)) {
     return 0;
   }
-  uint64_t raw = loadNative(address(entry), entry.size);
-  if ((entry.attributes & (kNodeIdRelative | kInRom)) == (kNodeIdRelative | kInRom)) {
+  uint64_t raw = loadNative(address(ref), ref.size());
+  if (nodeIdConstant(ref.attributes())) {
     raw += nodeId_;
   }
-  if (isSigned(entry.type)) {
-    return static_cast<uint64_t>(signExtend(raw, entry.size));
+  if (isSigned(type)) {
+    return static_cast<uint64_t>(signExtend(raw, ref.size()));
   }
   return raw;
 }
 
-int64_t ObjectDictionary::readSigned(const SubEntry& entry) const noexcept {
-  return static_cast<int64_t>(readUnsigned(entry));
+int64_t ObjectDictionary::readSigned(const EntryRef& ref) const noexcept {
+  return static_cast<int64_t>(readUnsigned(ref));
 }
 
-void ObjectDictionary::storeUnsigned(const SubEntry& entry, uint64_t value) noexcept {
-  uint8_t* target = ramAddress(entry);
-  if (target == nullptr || !(isSigned(entry.type) || isUnsigned(entry.type))) {
+void ObjectDictionary::storeUnsigned(const EntryRef& ref, uint64_t value) noexcept {
+  uint8_t* target = ramAddress(ref);
+  if (target == nullptr || !(isSigned(ref.type()) || isUnsigned(ref.type()))) {
     return;
   }
-  storeNative(target, value, entry.size);
+  storeNative(target, value, ref.size());
 }
 
 uint64_t ObjectDictionary::readUnsigned(uint16_t index, uint8_t subIndex,
                                         uint64_t fallback) const noexcept {
   const EntryRef ref = find(index, subIndex);
-  return ref.valid() ? readUnsigned(*ref.entry) : fallback;
+  return ref.valid() ? readUnsigned(ref) : fallback;
 }
 
 bool ObjectDictionary::storeUnsigned(uint16_t index, uint8_t subIndex, uint64_t value) noexcept {
@@ -291,42 +263,48 @@ bool ObjectDictionary::storeUnsigned(uint16_t index, uint8_t subIndex, uint64_t 
   if (!ref.valid()) {
     return false;
   }
-  storeUnsigned(*ref.entry, value);
+  storeUnsigned(ref, value);
   return true;
 }
 
-void ObjectDictionary::restoreEntry(const SubEntry& entry) noexcept {
-  uint8_t* target = ramAddress(entry);
-  if (target == nullptr) {
+void ObjectDictionary::restoreRow(const SubEntry& row) noexcept {
+  if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
     return;
   }
-  const size_t bytes = entry.type == DataType::kVisibleString ? entry.size + 1U : entry.size;
-  memcpy(target, static_cast<const uint8_t*>(definition_->defaults) + entry.offset, bytes);
-  if ((entry.attributes & kNodeIdRelative) != 0U) {
-    storeNative(target, loadNative(target, entry.size) + nodeId_, entry.size);
+  // A VISIBLE_STRING keeps its terminating zero in both blocks.
+  const size_t bytes = row.type == DataType::kVisibleString ? row.size + 1U : row.size;
+  for (unsigned k = 0; k < row.count; ++k) {
+    const size_t offset = row.offset + k * bytes;
+    uint8_t* target = values_ + offset;
+    memcpy(target, static_cast<const uint8_t*>(definition_->defaults) + offset, bytes);
+    if ((row.attributes & kNodeIdRelative) != 0U) {
+      storeNative(target, loadNative(target, row.size) + nodeId_, row.size);
+    }
+  }
+}
+
+template <typename Wanted>
+void ObjectDictionary::restoreRows(const Object& object, Wanted wanted) noexcept {
+  for (uint8_t i = 0; i < object.rowCount; ++i) {
+    if (wanted(object.rows[i])) {
+      restoreRow(object.rows[i]);
+    }
   }
 }
 
 void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
   for (size_t i = 0; i < definition_->objectCount; ++i) {
     const Object& object = definition_->objects[i];
-    if (object.index < first || object.index > last) {
-      continue;
-    }
-    for (size_t s = 0; s < object.subCount; ++s) {
-      restoreEntry(object.subs[s]);
+    if (object.index >= first && object.index <= last) {
+      restoreRows(object, [](const SubEntry&) { return true; });
     }
   }
 }
 
 void ObjectDictionary::restoreGroupDefaults(uint8_t group) noexcept {
   for (size_t i = 0; i < definition_->objectCount; ++i) {
-    const Object& object = definition_->objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      if (object.subs[s].group == group) {
-        restoreEntry(object.subs[s]);
-      }
-    }
+    restoreRows(definition_->objects[i],
+                [group](const SubEntry& row) { return row.group == group; });
   }
 }
 

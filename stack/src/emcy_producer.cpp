@@ -99,16 +99,16 @@ void EmcyProducer::signal(uint16_t code, uint8_t registerBits,
 void EmcyProducer::publishRegister() noexcept {
   const od::EntryRef ref = dictionary_.find(kErrorRegisterIndex, 0);
   if (ref.valid()) {
-    dictionary_.storeUnsigned(*ref.entry, errorRegister());
+    dictionary_.storeUnsigned(ref, errorRegister());
   }
 }
 
 void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
   const od::Object* history = dictionary_.findObject(kErrorHistoryIndex);
-  if (history == nullptr || history->subCount < 2U) {
+  if (history == nullptr || od::entryCount(*history) < 2U) {
     return;
   }
-  const auto capacity = static_cast<uint8_t>(history->subCount - 1U);
+  const auto capacity = static_cast<uint8_t>(od::entryCount(*history) - 1U);
   auto count = static_cast<uint8_t>(dictionary_.readUnsigned(kErrorHistoryIndex, 0, 0));
   if (count < capacity) {
     ++count;
@@ -188,7 +188,7 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
     if (ref.subIndex() != 0U || length < 1U || data[0] != 0U) {
       return AbortCode::kInvalidValue;
     }
-    for (uint8_t sub = 1; sub < ref.object->subCount; ++sub) {
+    for (uint8_t sub = 1; sub < od::entryCount(*ref.object); ++sub) {
       dictionary.storeUnsigned(kErrorHistoryIndex, sub, 0);
     }
     dictionary.storeUnsigned(kErrorHistoryIndex, 0, 0);
@@ -209,7 +209,7 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
       return AbortCode::kInvalidValue;  // CiA 301 7.3.5: NMT, SDO, error control, LSS
     }
   }
-  return dictionary.write(*ref.entry, data, length);
+  return dictionary.write(ref, data, length);
 }
 
 }  // namespace costa

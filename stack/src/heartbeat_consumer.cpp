@@ -15,7 +15,7 @@ void HeartbeatConsumer::configure(bool reset) noexcept {
   if (object == nullptr) {
     return;
   }
-  for (uint8_t i = 0; i + 1U < object->subCount && count_ < capacity_; ++i) {
+  for (uint8_t i = 0; i + 1U < od::entryCount(*object) && count_ < capacity_; ++i) {
     const auto value =
         static_cast<uint32_t>(dictionary_.readUnsigned(kIndex, static_cast<uint8_t>(i + 1U), 0));
     const auto nodeId = static_cast<uint8_t>(value >> 16U);
@@ -85,7 +85,7 @@ AbortCode HeartbeatConsumer::write(od::ObjectDictionary& dictionary, const od::E
       return AbortCode::kInvalidValue;
     }
     if (nodeId != 0U && (value & 0xFFFFU) != 0U) {
-      for (uint8_t sub = 1; sub < ref.object->subCount; ++sub) {
+      for (uint8_t sub = 1; sub < od::entryCount(*ref.object); ++sub) {
         if (sub == ref.subIndex()) {
           continue;
         }
@@ -96,7 +96,7 @@ AbortCode HeartbeatConsumer::write(od::ObjectDictionary& dictionary, const od::E
       }
     }
   }
-  const AbortCode written = dictionary.write(*ref.entry, data, length);
+  const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
     configure(false);
   }

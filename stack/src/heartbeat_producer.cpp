@@ -26,7 +26,7 @@ void HeartbeatProducer::process(Microseconds now, NmtState state) noexcept {
 
 AbortCode HeartbeatProducer::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                                    const uint8_t* data, size_t length) noexcept {
-  const AbortCode written = dictionary.write(*ref.entry, data, length);
+  const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
     restart(clock_.now);
   }

@@ -317,8 +317,8 @@ void Node::LssBridge::requestResetCommunication() noexcept {
 }
 
 void Node::AutoSave::onWritten(const od::EntryRef& ref, bool changed) noexcept {
-  if (changed && ref.entry->group != od::kGroupNone && node_.storageReady_) {
-    node_.store_.save(ref.entry->group);
+  if (changed && ref.group() != od::kGroupNone && node_.storageReady_) {
+    node_.store_.save(ref.group());
   }
 }
 

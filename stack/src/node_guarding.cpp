@@ -44,7 +44,7 @@ NodeGuarding::Event NodeGuarding::process(Microseconds now) noexcept {
 
 AbortCode NodeGuarding::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                               const uint8_t* data, size_t length) noexcept {
-  const AbortCode written = dictionary.write(*ref.entry, data, length);
+  const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone && guarded_ && !expired_) {
     const Microseconds life = lifeTime();
     deadline_ = life == 0U ? kNever : clock_.now + life;

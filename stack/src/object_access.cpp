@@ -10,7 +10,7 @@ AbortCode ObjectAccess::prepareRead(uint16_t index, uint8_t subIndex, const Read
   if (found != AbortCode::kNone) {
     return found;
   }
-  if ((out->entry->attributes & od::kReadable) == 0U) {
+  if ((out->attributes() & od::kReadable) == 0U) {
     return AbortCode::kReadOfWriteOnly;
   }
   ObjectHook* hook = hooks_.find(index);
@@ -23,7 +23,7 @@ AbortCode ObjectAccess::locateForWrite(uint16_t index, uint8_t subIndex,
   if (found != AbortCode::kNone) {
     return found;
   }
-  if ((out->entry->attributes & od::kWritable) == 0U) {
+  if ((out->attributes() & od::kWritable) == 0U) {
     return AbortCode::kWriteOfReadOnly;
   }
   return AbortCode::kNone;
@@ -41,14 +41,14 @@ AbortCode ObjectAccess::write(const od::EntryRef& ref, const uint8_t* data,
                               size_t length) noexcept {
   // Small values are compared before and after, so that observers can skip unchanged ones.
   uint8_t before[8] = {};
-  const uint8_t* current = dictionary_.address(*ref.entry);
-  const bool comparable = observer_ != nullptr && current != nullptr && ref.entry->size <= 8U;
+  const uint8_t* current = dictionary_.address(ref);
+  const bool comparable = observer_ != nullptr && current != nullptr && ref.size() <= 8U;
   if (comparable) {
-    memcpy(before, current, ref.entry->size);
+    memcpy(before, current, ref.size());
   }
   const AbortCode result = hookFor(ref).write(dictionary_, ref, data, length);
   if (result == AbortCode::kNone && observer_ != nullptr) {
-    const bool changed = !comparable || memcmp(before, current, ref.entry->size) != 0;
+    const bool changed = !comparable || memcmp(before, current, ref.size()) != 0;
     observer_->onWritten(ref, changed);
   }
   return result;

@@ -7,18 +7,13 @@ namespace {
 /// the first false.
 template <typename Visit>
 bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit visit) noexcept {
-  const od::Definition& definition = dictionary.definition();
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const od::Object& object = definition.objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      const od::SubEntry& entry = object.subs[s];
-      if (entry.group != group || entry.size == 0U) {
-        continue;
-      }
-      uint8_t* address = dictionary.ramAddress(entry);
-      if (address != nullptr && !visit(address, static_cast<size_t>(entry.size))) {
-        return false;
-      }
+  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
+    if (ref.group() != group || ref.size() == 0U) {
+      continue;
+    }
+    uint8_t* address = dictionary.ramAddress(ref);
+    if (address != nullptr && !visit(address, static_cast<size_t>(ref.size()))) {
+      return false;
     }
   }
   return true;
@@ -28,17 +23,12 @@ bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit v
 /// new node-id (an EMCY COB-ID 0x80 + id stays 0x80 + the new id). `sign` -1 before a save,
 /// +1 after a save and after a load.
 void shiftNodeIdRelative(od::ObjectDictionary& dictionary, uint8_t group, int sign) noexcept {
-  const od::Definition& definition = dictionary.definition();
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const od::Object& object = definition.objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      const od::SubEntry& entry = object.subs[s];
-      if (entry.group == group && (entry.attributes & od::kNodeIdRelative) != 0U &&
-          dictionary.ramAddress(entry) != nullptr) {
-        const uint64_t value = dictionary.readUnsigned(entry);
-        const uint64_t id = dictionary.nodeId();
-        dictionary.storeUnsigned(entry, sign < 0 ? value - id : value + id);
-      }
+  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
+    if (ref.group() == group && ref.has(od::kNodeIdRelative) &&
+        dictionary.ramAddress(ref) != nullptr) {
+      const uint64_t value = dictionary.readUnsigned(ref);
+      const uint64_t id = dictionary.nodeId();
+      dictionary.storeUnsigned(ref, sign < 0 ? value - id : value + id);
     }
   }
 }

@@ -55,16 +55,11 @@ bool ParameterStore::hasGroup(uint8_t group) const noexcept {
 size_t ParameterStore::groupPayloadLength(uint8_t group) const noexcept {
   size_t length = 0;
   bool present = false;
-  const od::Definition& definition = dictionary_.definition();
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const od::Object& object = definition.objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      const od::SubEntry& entry = object.subs[s];
-      if (entry.group == group) {
-        present = true;
-        if (dictionary_.ramAddress(entry) != nullptr) {
-          length += entry.size;
-        }
+  for (const od::EntryRef& ref : od::Entries(dictionary_.definition())) {
+    if (ref.group() == group) {
+      present = true;
+      if (dictionary_.ramAddress(ref) != nullptr) {
+        length += ref.size();
       }
     }
   }
@@ -101,8 +96,8 @@ size_t ParameterStore::computeLayout(Region* regions, size_t* count) const noexc
   const od::Definition& definition = dictionary_.definition();
   for (size_t i = 0; i < definition.objectCount; ++i) {
     const od::Object& object = definition.objects[i];
-    for (size_t s = 0; s < object.subCount; ++s) {
-      const uint8_t group = object.subs[s].group;
+    for (size_t r = 0; r < object.rowCount; ++r) {
+      const uint8_t group = object.rows[r].group;
       present[group / 32U] |= uint32_t{1} << (group % 32U);
     }
   }

@@ -167,7 +167,7 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   RpdoChannel* rpdo = receive ? findRpdo(communicationIndex) : nullptr;
   TpdoChannel* tpdo = receive ? nullptr : findTpdo(communicationIndex);
   if (rpdo == nullptr && tpdo == nullptr) {
-    return dictionary.write(*ref.entry, data, length);
+    return dictionary.write(ref, data, length);
   }
   const bool valid = rpdo != nullptr ? rpdo->valid() : tpdo->valid();
   const uint32_t canId = rpdo != nullptr ? rpdo->canId() : tpdo->canId();
@@ -177,7 +177,7 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   if (verdict != AbortCode::kNone) {
     return verdict;
   }
-  const AbortCode written = dictionary.write(*ref.entry, data, length);
+  const AbortCode written = dictionary.write(ref, data, length);
   if (written != AbortCode::kNone) {
     return written;
   }

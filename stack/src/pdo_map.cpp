@@ -39,10 +39,10 @@ AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t va
   }
   const uint16_t needed =
       direction == PdoDirection::kReceive ? od::kRpdoMappable : od::kTpdoMappable;
-  if ((ref.entry->attributes & needed) == 0U) {
+  if ((ref.attributes() & needed) == 0U) {
     return AbortCode::kNotMappable;
   }
-  if (ref.entry->size == 0U || bits != ref.entry->size * 8U) {
+  if (ref.size() == 0U || bits != ref.size() * 8U) {
     return AbortCode::kParameterIncompatible;
   }
   return AbortCode::kNone;
@@ -103,7 +103,7 @@ void PdoMap::pack(const od::ObjectDictionary& dictionary, uint8_t* out) const no
       out[offset + b] = 0;
     }
     if (slot.ref.valid()) {
-      dictionary.read(*slot.ref.entry, 0, out + offset, slot.bytes);
+      dictionary.read(slot.ref, 0, out + offset, slot.bytes);
     }
     offset += slot.bytes;
   }
@@ -115,7 +115,7 @@ AbortCode PdoMap::unpack(ObjectAccess& access, const uint8_t* data) const noexce
     const Slot& slot = slots_[i];
     if (slot.ref.valid()) {
       const AbortCode verdict =
-          access.dictionary().check(*slot.ref.entry, data + offset, slot.bytes);
+          access.dictionary().check(slot.ref, data + offset, slot.bytes);
       if (verdict != AbortCode::kNone) {
         return verdict;
       }

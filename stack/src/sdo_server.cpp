@@ -24,12 +24,12 @@ constexpr uint8_t kScsInitiateUploadResponse = 0x40;
 constexpr size_t kSegmentBytes = 7;
 
 // Bytes a download with e=1, s=0 carries: the value's own size when it fits.
-size_t unspecifiedExpeditedLength(const od::SubEntry& entry, const uint8_t* data) {
-  if (od::isNumeric(entry.type) && entry.size <= 4U) {
-    return entry.size;
+size_t unspecifiedExpeditedLength(const od::EntryRef& ref, const uint8_t* data) {
+  if (od::isNumeric(ref.type()) && ref.size() <= 4U) {
+    return ref.size();
   }
   size_t length = 4;
-  if (entry.type == od::DataType::kVisibleString) {
+  if (ref.type() == od::DataType::kVisibleString) {
     while (length > 0U && data[length - 1U] == 0U) {
       --length;
     }
@@ -183,7 +183,7 @@ void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexc
   const bool sizeIndicated = (request[0] & 0x01U) != 0U;
   if (expedited) {
     const size_t length = sizeIndicated ? 4U - ((request[0] >> 2U) & 0x03U)
-                                        : unspecifiedExpeditedLength(*ref_.entry, request + 4);
+                                        : unspecifiedExpeditedLength(ref_, request + 4);
     const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
     if (written != AbortCode::kNone) {
       sendAbort(index_, subIndex_, written);

@@ -8,7 +8,7 @@ namespace costa {
 
 AbortCode SdoValueReader::begin(const od::EntryRef& ref, size_t* size) noexcept {
   ref_ = ref;
-  streamed_ = sdoStreams(*ref.entry, bufferSize_);
+  streamed_ = sdoStreams(ref, bufferSize_);
   if (streamed_) {
     size_t produced = 0;
     const AbortCode sized = access_.readStream(ref, 0, buffer_, 0, &produced, &size_);
@@ -17,7 +17,7 @@ AbortCode SdoValueReader::begin(const od::EntryRef& ref, size_t* size) noexcept 
     }
   } else {
     const od::ObjectDictionary& dictionary = access_.dictionary();
-    size_ = dictionary.read(*ref.entry, 0, buffer_, bufferSize_);
+    size_ = dictionary.read(ref, 0, buffer_, bufferSize_);
   }
   *size = size_;
   return AbortCode::kNone;

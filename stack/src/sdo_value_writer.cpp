@@ -8,15 +8,15 @@ namespace costa {
 namespace {
 
 // Early verdict on the indicated size of a buffered download.
-AbortCode checkIndicatedSize(const od::SubEntry& entry, size_t size, size_t bufferSize) {
-  if (od::isNumeric(entry.type) || entry.type == od::DataType::kOctetString) {
-    if (size > entry.size) {
+AbortCode checkIndicatedSize(const od::EntryRef& ref, size_t size, size_t bufferSize) {
+  if (od::isNumeric(ref.type()) || ref.type() == od::DataType::kOctetString) {
+    if (size > ref.size()) {
       return AbortCode::kLengthTooHigh;
     }
-    if (size < entry.size) {
+    if (size < ref.size()) {
       return AbortCode::kLengthTooLow;
     }
-  } else if (entry.type == od::DataType::kVisibleString && size > entry.size) {
+  } else if (ref.type() == od::DataType::kVisibleString && size > ref.size()) {
     return AbortCode::kLengthTooHigh;
   }
   return size > bufferSize ? AbortCode::kOutOfMemory : AbortCode::kNone;
@@ -26,7 +26,7 @@ AbortCode checkIndicatedSize(const od::SubEntry& entry, size_t size, size_t buff
 
 AbortCode SdoValueWriter::writeWhole(const od::EntryRef& ref, const uint8_t* data,
                                      size_t length) noexcept {
-  if (!sdoStreams(*ref.entry, bufferSize_)) {
+  if (!sdoStreams(ref, bufferSize_)) {
     return access_.write(ref, data, length);
   }
   const AbortCode written = access_.writeStream(ref, 0, data, length, true, length);
@@ -38,14 +38,14 @@ AbortCode SdoValueWriter::writeWhole(const od::EntryRef& ref, const uint8_t* dat
 
 AbortCode SdoValueWriter::begin(const od::EntryRef& ref, size_t indicatedSize) noexcept {
   ref_ = ref;
-  streamed_ = sdoStreams(*ref.entry, bufferSize_);
+  streamed_ = sdoStreams(ref, bufferSize_);
   indicated_ = indicatedSize;
   received_ = 0;
   flushed_ = 0;
   if (!streamed_) {
     const AbortCode sized = indicatedSize == kSizeNotIndicated
                                 ? AbortCode::kNone
-                                : checkIndicatedSize(*ref.entry, indicatedSize, bufferSize_);
+                                : checkIndicatedSize(ref, indicatedSize, bufferSize_);
     open_ = sized == AbortCode::kNone;
     return sized;
   }

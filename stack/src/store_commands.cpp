@@ -30,7 +30,7 @@ AbortCode StoreCommands::prepareRead(od::ObjectDictionary& dictionary, const od:
   if (ref.subIndex() != 0U) {
     const bool able =
         store_ != nullptr && store_->isLaidOut() && groupsOf(ref.index(), ref.subIndex()) != 0U;
-    dictionary.storeUnsigned(*ref.entry, able ? 1U : 0U);
+    dictionary.storeUnsigned(ref, able ? 1U : 0U);
   }
   return AbortCode::kNone;
 }

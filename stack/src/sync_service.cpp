@@ -79,7 +79,7 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
       return AbortCode::kCannotStoreState;  // CiA 301: only while the cycle period is 0
     }
   }
-  const AbortCode written = dictionary.write(*ref.entry, data, length);
+  const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
     configure(clock_.now);
   }

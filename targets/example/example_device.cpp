@@ -37,7 +37,7 @@ AbortCode ExampleDevice::write(od::ObjectDictionary& dictionary, const od::Entry
   if (ref.index() == kOperatingMode && node_.state() != NmtState::kPreOperational) {
     return AbortCode::kCannotStoreState;
   }
-  const AbortCode checked = dictionary.check(*ref.entry, data, length);
+  const AbortCode checked = dictionary.check(ref, data, length);
   if (checked != AbortCode::kNone) {
     return checked;
   }
@@ -50,7 +50,7 @@ AbortCode ExampleDevice::write(od::ObjectDictionary& dictionary, const od::Entry
       dictionary.storeUnsigned(kUptime, 0, 0);
     }
   }
-  return dictionary.write(*ref.entry, data, length);
+  return dictionary.write(ref, data, length);
 }
 
 AbortCode ExampleDevice::readStream(od::ObjectDictionary& dictionary, const od::EntryRef& ref,

@@ -147,16 +147,16 @@ AbortCode GefranDevice::prepareRead(od::ObjectDictionary& dictionary, const od::
                                     const ReadRequest& request) noexcept {
   (void)request;
   if (ref.index() == kLssParameters && ref.subIndex() == 1U) {
-    dictionary.storeUnsigned(*ref.entry, bitRateOf(node_.pendingBitTiming()) / 1000U);
+    dictionary.storeUnsigned(ref, bitRateOf(node_.pendingBitTiming()) / 1000U);
   } else if (ref.index() == kLssParameters && ref.subIndex() == 2U) {
-    dictionary.storeUnsigned(*ref.entry, node_.pendingNodeId());
+    dictionary.storeUnsigned(ref, node_.pendingNodeId());
   }
   return AbortCode::kNone;
 }
 
 AbortCode GefranDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                               const uint8_t* data, size_t length) noexcept {
-  const AbortCode checked = dictionary.check(*ref.entry, data, length);
+  const AbortCode checked = dictionary.check(ref, data, length);
   if (checked != AbortCode::kNone) {
     return ref.index() == kLssParameters && ref.subIndex() == 3U ? AbortCode::kCannotStore
                                                                  : checked;
@@ -191,7 +191,7 @@ AbortCode GefranDevice::write(od::ObjectDictionary& dictionary, const od::EntryR
       default: break;
     }
   }
-  return dictionary.write(*ref.entry, data, length);
+  return dictionary.write(ref, data, length);
 }
 
 }  // namespace costa::gefran

@@ -80,30 +80,31 @@ std::string FrameTracer::formatValue(uint16_t index, uint8_t subIndex, const uin
   if (!ref.valid()) {
     return bytes(data, length);
   }
-  const od::SubEntry& entry = *ref.entry;
-  if (entry.type == od::DataType::kVisibleString) {
+  const od::DataType type = ref.type();
+  const size_t size = ref.size();
+  if (type == od::DataType::kVisibleString) {
     return quoted(data, length);
   }
-  if (!od::isNumeric(entry.type) || length < entry.size) {
+  if (!od::isNumeric(type) || length < size) {
     return bytes(data, length);
   }
-  const uint64_t raw = loadLittleEndian(data, entry.size);
+  const uint64_t raw = loadLittleEndian(data, size);
   char buffer[64];
-  if (od::isSigned(entry.type)) {
+  if (od::isSigned(type)) {
     std::snprintf(buffer, sizeof(buffer), "%lld",
-                  static_cast<long long>(signExtend(raw, entry.size)));
-  } else if (entry.type == od::DataType::kReal32) {
+                  static_cast<long long>(signExtend(raw, size)));
+  } else if (type == od::DataType::kReal32) {
     float value = 0.0F;
     const auto bits = static_cast<uint32_t>(raw);
     std::memcpy(&value, &bits, 4);
     std::snprintf(buffer, sizeof(buffer), "%g", static_cast<double>(value));
-  } else if (entry.type == od::DataType::kReal64) {
+  } else if (type == od::DataType::kReal64) {
     double value = 0.0;
     std::memcpy(&value, &raw, 8);
     std::snprintf(buffer, sizeof(buffer), "%g", value);
   } else {
     std::snprintf(buffer, sizeof(buffer), "%llu (%s)", static_cast<unsigned long long>(raw),
-                  hex(raw, static_cast<int>(entry.size * 2U)).c_str());
+                  hex(raw, static_cast<int>(size * 2U)).c_str());
   }
   return buffer;
 }

@@ -39,7 +39,7 @@ uint32_t SoloDevice::readU32(uint16_t index) const noexcept {
 
 double SoloDevice::readSfxt(uint16_t index) const noexcept {
   return sfxtToDouble(static_cast<int32_t>(
-      node_.dictionary().readSigned(*node_.dictionary().find(index, 0).entry)));
+      node_.dictionary().readSigned(node_.dictionary().find(index, 0))));
 }
 
 void SoloDevice::storeSfxt(uint16_t index, double value) noexcept {
@@ -120,7 +120,7 @@ AbortCode SoloDevice::prepareRead(od::ObjectDictionary& dictionary, const od::En
     }
     DriveFeedback feedback;
     drive_.read(&feedback);
-    dictionary.storeUnsigned(*ref.entry, feedback.analogue[channel]);
+    dictionary.storeUnsigned(ref, feedback.analogue[channel]);
   }
   return AbortCode::kNone;
 }
@@ -136,10 +136,10 @@ AbortCode SoloDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef
     if (kilohertz < 8U || kilohertz > 80U) {
       return AbortCode::kInvalidValue;
     }
-    dictionary.storeUnsigned(*ref.entry, uint64_t{kilohertz} * 1000U);
+    dictionary.storeUnsigned(ref, uint64_t{kilohertz} * 1000U);
     return AbortCode::kNone;
   }
-  const AbortCode checked = dictionary.check(*ref.entry, data, length);
+  const AbortCode checked = dictionary.check(ref, data, length);
   if (checked != AbortCode::kNone) {
     return checked;
   }
@@ -168,7 +168,7 @@ AbortCode SoloDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef
     case 0x3020: errors_.assign(value); return AbortCode::kNone;
     default: break;
   }
-  return dictionary.write(*ref.entry, data, length);
+  return dictionary.write(ref, data, length);
 }
 
 void SoloDevice::onResetApplication() noexcept {

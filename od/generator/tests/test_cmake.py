@@ -12,14 +12,16 @@ import unittest
 from tests.helpers import EXAMPLE_EDS, GENERATOR_DIR, INCLUDE_DIR, REPO_ROOT
 
 CMAKE_MODULE = os.path.join(REPO_ROOT, "od", "cmake", "costa_object_dictionary.cmake")
+# The REAL limit check the example's definition names (od/src, part of costa_od).
+REAL_LIMITS = os.path.join(REPO_ROOT, "od", "src", "real_limits.cpp")
 
 PROJECT = """
 cmake_minimum_required(VERSION 3.20)
 project(odgen_cmake_test CXX)
 set(CMAKE_CXX_STANDARD 17)
 include("{module}")
-add_library(costa_od INTERFACE)
-target_include_directories(costa_od INTERFACE "{include}")
+add_library(costa_od STATIC "{real_limits}")
+target_include_directories(costa_od PUBLIC "{include}")
 costa_add_object_dictionary(device_od EDS example.eds NAME example)
 add_executable(app main.cpp)
 target_link_libraries(app PRIVATE device_od_names)
@@ -49,7 +51,7 @@ class CMakeTest(unittest.TestCase):
             self.skipTest("cmake or c++ not found")
         with tempfile.TemporaryDirectory() as source:
             with open(os.path.join(source, "CMakeLists.txt"), "w", encoding="utf-8") as stream:
-                stream.write(PROJECT.format(module=CMAKE_MODULE, include=INCLUDE_DIR))
+                stream.write(PROJECT.format(module=CMAKE_MODULE, include=INCLUDE_DIR, real_limits=REAL_LIMITS))
             with open(os.path.join(source, "main.cpp"), "w", encoding="utf-8") as stream:
                 stream.write(MAIN)
             shutil.copy(EXAMPLE_EDS, os.path.join(source, "example.eds"))
@@ -74,7 +76,7 @@ class CMakeTest(unittest.TestCase):
         lines[bad] = "DataType=0x0099"
         with tempfile.TemporaryDirectory() as source:
             with open(os.path.join(source, "CMakeLists.txt"), "w", encoding="utf-8") as stream:
-                stream.write(PROJECT.format(module=CMAKE_MODULE, include=INCLUDE_DIR))
+                stream.write(PROJECT.format(module=CMAKE_MODULE, include=INCLUDE_DIR, real_limits=REAL_LIMITS))
             with open(os.path.join(source, "main.cpp"), "w", encoding="utf-8") as stream:
                 stream.write(MAIN)
             with open(os.path.join(source, "example.eds"), "w", encoding="utf-8") as stream:

@@ -10,7 +10,7 @@ import subprocess
 import tempfile
 import unittest
 
-from tests.helpers import EXAMPLE_EDS, INCLUDE_DIR, parse_file, run_generator
+from tests.helpers import EXAMPLE_EDS, INCLUDE_DIR, REPO_ROOT, parse_file, run_generator
 
 STRICT_FLAGS = ["-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wshadow",
                 "-Wcast-align", "-Wold-style-cast", "-Wnull-dereference", "-Wdouble-promotion",
@@ -33,20 +33,24 @@ int main() {
          unsigned{gen::Capacity::kObjectCount});
   for (uint16_t o = 0; o < d.objectCount; ++o) {
     const costa::od::Object& object = d.objects[o];
-    for (uint8_t s = 0; s < object.subCount; ++s) {
-      const costa::od::SubEntry& e = object.subs[s];
-      const bool rom = (e.attributes & costa::od::kInRom) != 0;
-      const unsigned char* block = static_cast<const unsigned char*>(rom ? d.constants
-                                                                         : d.defaults);
-      printf("E %04X %u %04X %u %u %u %u ", unsigned{object.index}, unsigned{e.subIndex},
-             static_cast<unsigned>(e.type), unsigned{e.attributes}, unsigned{e.size},
-             unsigned{e.group}, static_cast<unsigned>(object.code));
-      for (unsigned i = 0; i < e.size; ++i) printf("%02X", unsigned{block[e.offset + i]});
-      if (e.limits != nullptr) {
-        printf(" L%016llX:%016llX", static_cast<unsigned long long>(e.limits->low),
-               static_cast<unsigned long long>(e.limits->high));
+    for (uint8_t r = 0; r < object.rowCount; ++r) {
+      const costa::od::SubEntry& e = object.rows[r];
+      for (unsigned k = 0; k < e.count; ++k) {
+        const bool rom = (e.attributes & costa::od::kInRom) != 0;
+        const unsigned char* block = static_cast<const unsigned char*>(rom ? d.constants
+                                                                           : d.defaults);
+        const unsigned offset = e.offset + k * e.size;
+        printf("E %04X %u %04X %u %u %u %u ", unsigned{object.index}, e.subIndex + k,
+               static_cast<unsigned>(e.type), unsigned{e.attributes}, unsigned{e.size},
+               unsigned{e.group}, static_cast<unsigned>(object.code));
+        for (unsigned i = 0; i < e.size; ++i) printf("%02X", unsigned{block[offset + i]});
+        if (e.limits != 0) {
+          const costa::od::Limits& limits = d.limits[e.limits - 1];
+          printf(" L%016llX:%016llX", static_cast<unsigned long long>(limits.low),
+                 static_cast<unsigned long long>(limits.high));
+        }
+        printf("\n");
       }
-      printf("\n");
     }
   }
   for (uint32_t i = 0; i < gen::kNames.count; ++i) {
@@ -118,10 +122,15 @@ class CompileTest(unittest.TestCase):
             for compiler in available:
                 with self.subTest(compiler=os.path.basename(compiler)):
                     objects = []
-                    for source in ("example_od.cpp", "example_od_names.cpp"):
-                        obj = os.path.join(work, f"{os.path.basename(compiler)}-{source}.o")
+                    # The REAL limit check the example's definition names lives in od/src.
+                    sources = [os.path.join(out, "example_od.cpp"),
+                               os.path.join(out, "example_od_names.cpp"),
+                               os.path.join(REPO_ROOT, "od", "src", "real_limits.cpp")]
+                    for source in sources:
+                        name = os.path.basename(source)
+                        obj = os.path.join(work, f"{os.path.basename(compiler)}-{name}.o")
                         self._run([compiler, *STRICT_FLAGS, "-I", INCLUDE_DIR, "-I", out, "-c",
-                                   os.path.join(out, source), "-o", obj])
+                                   source, "-o", obj])
                         objects.append(obj)
                     program = os.path.join(work, f"{os.path.basename(compiler)}-checker")
                     self._run([compiler, "-std=c++17", "-Wall", "-Wextra", "-Werror", "-I",

@@ -79,37 +79,53 @@ class ExampleOutputTest(unittest.TestCase):
 
     def test_sub_entry_rows(self):
         self.assertIn(
-            "{0, costa::od::DataType::kUnsigned16, costa::od::kReadable | costa::od::kWritable"
-            " | costa::od::kHasLimits, 2, costa::od::kGroupCommunication, "
-            "offsetof(Values, x1017_producer_heartbeat_time), &kLimits[0]},", self.cpp)
+            "{0, 1, costa::od::DataType::kUnsigned16, costa::od::kReadable | costa::od::kWritable"
+            " | costa::od::kHasLimits, 2, costa::od::kGroupCommunication, 1, "
+            "offsetof(Values, x1017_producer_heartbeat_time)},", self.cpp)
+        # Record members of one type stored back to back: one row of four.
         self.assertIn(
-            "{1, costa::od::DataType::kUnsigned32, costa::od::kReadable, 4, "
-            "costa::od::kGroupNone, offsetof(Values, x1018_identity_object) + "
-            "offsetof(Values::X1018IdentityObject, vendor_id), nullptr},", self.cpp)
+            "{1, 4, costa::od::DataType::kUnsigned32, costa::od::kReadable, 4, "
+            "costa::od::kGroupNone, 0, offsetof(Values, x1018_identity_object) + "
+            "offsetof(Values::X1018IdentityObject, vendor_id)},", self.cpp)
         self.assertIn(
-            "offsetof(Values, x1016_consumer_heartbeat_time) + offsetof(Values::"
-            "X1016ConsumerHeartbeatTime, item) + 2 * sizeof(uint32_t), nullptr},", self.cpp)
-        self.assertIn("+ 1 * sizeof(char[5]), nullptr},", self.cpp)
+            "static_assert(offsetof(Values, x1018_identity_object) + offsetof(Values::"
+            "X1018IdentityObject, serial_number) == offsetof(Values, x1018_identity_object) + "
+            "offsetof(Values::X1018IdentityObject, vendor_id) + 3 * 4, \"0x1018:4 follows the "
+            "value before it\");", self.cpp)
+        # Array items: one row of three.
         self.assertIn(
-            "{0, costa::od::DataType::kUnsigned8, costa::od::kReadable | costa::od::kInRom, 1,"
-            " costa::od::kGroupNone, offsetof(Constants, x1018_identity_object) + "
-            "offsetof(Constants::X1018IdentityObject, highest_sub_index_supported), nullptr},",
+            "{1, 3, costa::od::DataType::kUnsigned32, costa::od::kReadable | costa::od::kWritable,"
+            " 4, costa::od::kGroupCommunication, 0, offsetof(Values, x1016_consumer_heartbeat_time)"
+            " + offsetof(Values::X1016ConsumerHeartbeatTime, item)},", self.cpp)
+        # Strings are never merged: one row per item.
+        self.assertIn("+ 1 * sizeof(char[5])},", self.cpp)
+        self.assertIn(
+            "{0, 1, costa::od::DataType::kUnsigned8, costa::od::kReadable | costa::od::kInRom, 1,"
+            " costa::od::kGroupNone, 0, offsetof(Constants, x1018_identity_object) + "
+            "offsetof(Constants::X1018IdentityObject, highest_sub_index_supported)},",
             self.cpp)
-        self.assertIn("{0, costa::od::DataType::kDomain, costa::od::kReadable | "
-                      "costa::od::kWritable, 0, costa::od::kGroupNone, 0, nullptr},", self.cpp)
+        self.assertIn("{0, 1, costa::od::DataType::kDomain, costa::od::kReadable | "
+                      "costa::od::kWritable, 0, costa::od::kGroupNone, 0, 0},", self.cpp)
         self.assertIn("costa::od::kReadable | costa::od::kWritable | costa::od::kNodeIdRelative"
-                      ", 4, costa::od::kGroupCommunication, offsetof(Values, x1014_cob_id_emcy)",
+                      ", 4, costa::od::kGroupCommunication, 0, offsetof(Values, x1014_cob_id_emcy)",
                       self.cpp)
         self.assertIn("costa::od::kGroupLss", self.cpp)
-        self.assertIn(", 1, 7, offsetof(Values, x2009_lss_settings)", self.cpp)
+        self.assertIn(", 1, 7, 0, offsetof(Values, x2009_lss_settings)", self.cpp)
+        # A ROM item and RAM items of one array differ in attributes: separate rows.
+        self.assertIn("{2, 2, costa::od::DataType::kUnsigned16, costa::od::kReadable | "
+                      "costa::od::kWritable, 2, costa::od::kGroupApplication, 0, "
+                      "offsetof(Values, x2008_mixed_array) + offsetof(Values::X2008MixedArray, "
+                      "element_2)},", self.cpp)
+        self.assertIn('static_assert(sizeof(Values) <= 0xFFFFU && sizeof(Constants) <= 0xFFFFU, '
+                      '"value offsets are 16-bit: keep each block under 64 KiB");', self.cpp)
 
     def test_objects_sorted(self):
-        rows = re.findall(r"\{0x([0-9A-F]{4}), costa::od::ObjectCode::(\w+), (\d+), kSubs",
+        rows = re.findall(r"\{0x([0-9A-F]{4}), costa::od::ObjectCode::(\w+), (\d+), kRows",
                           self.cpp)
         self.assertEqual(len(rows), 31)
         self.assertEqual([r[0] for r in rows], sorted(r[0] for r in rows))
-        self.assertIn(("1016", "kArray", "4"), rows)
-        self.assertIn(("1018", "kRecord", "5"), rows)
+        self.assertIn(("1016", "kArray", "2"), rows)
+        self.assertIn(("1018", "kRecord", "2"), rows)
         self.assertIn(("2006", "kDomain", "1"), rows)
         self.assertIn(("1000", "kVar", "1"), rows)
 
@@ -133,7 +149,8 @@ class ExampleOutputTest(unittest.TestCase):
         layout = zlib.crc32(rows.encode("ascii"))
         self.assertIn("const costa::od::Definition kDefinition = {\n    kObjects,\n    31,\n"
                       "    &kConstants,\n    &kDefaults,\n    sizeof(Values),\n"
-                      f"    0x{layout:08X}U,\n    \"Costa example device\",\n}};", self.cpp)
+                      f"    0x{layout:08X}U,\n    \"Costa example device\",\n    kLimits,\n"
+                      "    &costa::od::checkRealLimits,\n};", self.cpp)
 
     def test_size_checks(self):
         self.assertIn('static_assert(sizeof(Values::x2003_serial_text) == 21, '
@@ -203,6 +220,7 @@ class SmallOutputTest(unittest.TestCase):
         self.assertIn("kHeartbeatConsumers = 0;", header)
         self.assertIn("kErrorHistory = 0;", header)
         self.assertNotIn("kLimits", result.files["test_od.cpp"])
+        self.assertIn("    nullptr,\n    nullptr,\n};", result.files["test_od.cpp"])
 
     def test_literal_helpers(self):
         self.assertEqual(c_string(b'a"b\\c?\n\x01\xe9'), '"a\\"b\\\\c\\?\\012\\001\\351"')

@@ -46,7 +46,7 @@ class ObjectHook {
   /// elsewhere, or act after storing.
   virtual AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                           const uint8_t* data, size_t length) noexcept {
-    return dictionary.write(*ref.entry, data, length);
+    return dictionary.write(ref, data, length);
   }
 
   /// Reads part of a streamed entry for a remote read (after prepareRead()): copies up to
@@ -58,8 +58,8 @@ class ObjectHook {
   virtual AbortCode readStream(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                                size_t offset, uint8_t* destination, size_t capacity,
                                size_t* produced, size_t* totalSize) noexcept {
-    *totalSize = dictionary.valueSize(*ref.entry);
-    *produced = capacity == 0U ? 0U : dictionary.read(*ref.entry, offset, destination, capacity);
+    *totalSize = dictionary.valueSize(ref);
+    *produced = capacity == 0U ? 0U : dictionary.read(ref, offset, destination, capacity);
     return AbortCode::kNone;
   }
 
@@ -81,7 +81,7 @@ class ObjectHook {
     (void)length;
     (void)last;
     (void)indicatedSize;
-    return ref.entry->type == od::DataType::kDomain ? AbortCode::kCannotStore
+    return ref.type() == od::DataType::kDomain ? AbortCode::kCannotStore
                                                     : AbortCode::kOutOfMemory;
   }
 

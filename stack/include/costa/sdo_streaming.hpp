@@ -3,15 +3,15 @@
 
 #include <stddef.h>
 
-#include "costa/od/definition.hpp"
+#include "costa/od/entry_ref.hpp"
 
 namespace costa {
 
 /// DOMAINs (whose data lives with the application) and values larger than the SDO buffer are
 /// moved piecewise through ObjectHook::readStream() and writeStream(); every other value is
 /// copied whole through the buffer, so that a download is written only when complete.
-inline bool sdoStreams(const od::SubEntry& entry, size_t bufferSize) noexcept {
-  return entry.type == od::DataType::kDomain || entry.size > bufferSize;
+inline bool sdoStreams(const od::EntryRef& ref, size_t bufferSize) noexcept {
+  return ref.type() == od::DataType::kDomain || ref.size() > bufferSize;
 }
 
 }  // namespace costa

@@ -6,7 +6,7 @@
 
 namespace costa::od {
 
-enum class DataType : uint16_t {
+enum class DataType : uint8_t {
   kBoolean = 0x0001,
   kInteger8 = 0x0002,
   kInteger16 = 0x0003,

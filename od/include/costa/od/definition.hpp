@@ -6,19 +6,20 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/od/abort_code.hpp"
 #include "costa/od/data_type.hpp"
 
 namespace costa::od {
 
 /// Attribute bits of a sub-entry.
-enum Attribute : uint16_t {
+enum Attribute : uint8_t {
   kReadable = 1U << 0,        ///< SDO upload allowed (ro, rw, rwr, rww, const).
   kWritable = 1U << 1,        ///< SDO download allowed (wo, rw, rwr, rww).
   kInRom = 1U << 2,           ///< `const`: the value is in the constants block, not in RAM.
   kRpdoMappable = 1U << 3,    ///< May be mapped into an RPDO.
   kTpdoMappable = 1U << 4,    ///< May be mapped into a TPDO.
   kNodeIdRelative = 1U << 5,  ///< Default is `$NODEID + value`.
-  kHasLimits = 1U << 6,       ///< `limits` points at LowLimit/HighLimit.
+  kHasLimits = 1U << 6,       ///< SubEntry::limits names a LowLimit/HighLimit row.
 };
 
 /// Storage groups: which save/restore command covers a sub-entry (0x1010/0x1011 sub-indices).
@@ -38,16 +39,28 @@ struct Limits {
   uint64_t high;
 };
 
-/// One sub-index of an object.
+/// Checks the raw bits of a REAL32/REAL64 value against its limits: kInvalidValue (NaN),
+/// kValueTooHigh, kValueTooLow or kNone. The generator names od::checkRealLimits in a
+/// Definition only when the dictionary has a REAL entry with limits, so that dictionaries
+/// without one link no floating-point code.
+using RealLimitCheck = AbortCode (*)(DataType type, uint64_t raw, const Limits& limits);
+AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noexcept;
+
+/// One row of an object: `count` consecutive sub-indices from `subIndex` that share every
+/// property. Value k of the row (sub-index subIndex + k) lies at `offset + k * size`; the
+/// generator merges only fixed-size values stored back to back (array items, record members of
+/// one type). Use EntryRef for one sub-index's properties.
 struct SubEntry {
-  uint8_t subIndex;
-  DataType type;
-  uint16_t attributes;   ///< Attribute bits.
-  uint16_t size;         ///< Bytes of the value; capacity for VISIBLE_STRING; 0 for DOMAIN.
-  uint8_t group;         ///< StorageGroup.
-  uint32_t offset;       ///< Byte offset in the RAM values block, or in the ROM constants block
-                         ///< when kInRom. The ROM defaults block has the values' layout.
-  const Limits* limits;  ///< Non-null exactly when kHasLimits.
+  uint8_t subIndex;     ///< First sub-index of the row.
+  uint8_t count;        ///< Sub-indices in the row, 1..255.
+  DataType type;        ///< CiA 301 data type.
+  uint8_t attributes;   ///< Attribute bits.
+  uint16_t size;        ///< Bytes of one value; capacity for VISIBLE_STRING; 0 for DOMAIN.
+  uint8_t group;        ///< StorageGroup.
+  uint8_t limits;       ///< 0: no limits; else 1 + the row of Definition::limits.
+  uint16_t offset;      ///< Of the first value, in the RAM values block, or in the ROM
+                        ///< constants block when kInRom. The ROM defaults block has the
+                        ///< values' layout.
 };
 
 /// Object codes of CiA 301 (EDS ObjectType).
@@ -58,12 +71,12 @@ enum class ObjectCode : uint8_t {
   kRecord = 0x09,
 };
 
-/// One index of the dictionary; `subs` is sorted by sub-index.
+/// One index of the dictionary; `rows` is sorted by sub-index.
 struct Object {
   uint16_t index;
   ObjectCode code;
-  uint8_t subCount;
-  const SubEntry* subs;
+  uint8_t rowCount;
+  const SubEntry* rows;
 };
 
 /// A whole dictionary. `objects` is sorted by index.
@@ -75,7 +88,18 @@ struct Definition {
   uint32_t valuesSize;     ///< Size of the RAM values block in bytes.
   uint32_t layoutId;       ///< Identifies the layout of the stored groups (for stored images).
   const char* deviceName;  ///< Name of the device description the tables were generated from.
+  const Limits* limits;    ///< Rows named by SubEntry::limits (null when none has limits).
+  RealLimitCheck realLimits;  ///< Null unless a REAL entry has limits.
 };
+
+/// Number of sub-indices an object has (sub-index 0 included).
+constexpr unsigned entryCount(const Object& object) noexcept {
+  unsigned count = 0;
+  for (unsigned row = 0; row < object.rowCount; ++row) {
+    count += object.rows[row].count;
+  }
+  return count;
+}
 
 /// Optional names of objects and sub-indices, emitted in a separate translation unit so that
 /// firmware builds need not link them. Sorted by (index, subIndex).

@@ -6,6 +6,10 @@
 
 namespace costa {
 
+/// The CPU stores integers least significant byte first, as the wire does: values can be
+/// copied between the dictionary and frames without conversion.
+inline constexpr bool kLittleEndianHost = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
+
 /// Writes the low `length` bytes of `value`, least significant first. `length` <= 8.
 inline void storeLittleEndian(uint8_t* destination, uint64_t value, size_t length) noexcept {
   for (size_t i = 0; i < length; ++i) {

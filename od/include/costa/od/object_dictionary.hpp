@@ -6,17 +6,9 @@
 
 #include "costa/od/abort_code.hpp"
 #include "costa/od/definition.hpp"
+#include "costa/od/entry_ref.hpp"
 
 namespace costa::od {
-
-/// A located sub-entry.
-struct EntryRef {
-  const Object* object = nullptr;
-  const SubEntry* entry = nullptr;
-  bool valid() const noexcept { return entry != nullptr; }
-  uint16_t index() const noexcept { return object->index; }
-  uint8_t subIndex() const noexcept { return entry->subIndex; }
-};
 
 /// Reads and writes values by index and sub-index, with the checks every writer must pass
 /// (length, limits, boolean range). Access rights (ro/wo) and side effects are not checked here:
@@ -39,37 +31,37 @@ class ObjectDictionary {
 
   /// Locates an object; nullptr when absent. O(log n).
   const Object* findObject(uint16_t index) const noexcept;
-  /// Locates a sub-entry; fails with kNoObject or kNoSubIndex.
+  /// Locates a sub-index; fails with kNoObject or kNoSubIndex. O(log n).
   AbortCode find(uint16_t index, uint8_t subIndex, EntryRef* out) const noexcept;
-  /// Locates a sub-entry; invalid ref when absent.
+  /// Locates a sub-index; invalid ref when absent.
   EntryRef find(uint16_t index, uint8_t subIndex) const noexcept;
 
   /// Size in bytes of the current value: the type size, the string length up to the first NUL
   /// for VISIBLE_STRING, 0 for DOMAIN (whose data lives with the application).
-  size_t valueSize(const SubEntry& entry) const noexcept;
+  size_t valueSize(const EntryRef& ref) const noexcept;
 
   /// Copies up to `capacity` bytes of the value's wire representation (little-endian),
   /// starting at byte `offset`, into `destination`. Returns the number of bytes copied.
-  size_t read(const SubEntry& entry, size_t offset, uint8_t* destination,
+  size_t read(const EntryRef& ref, size_t offset, uint8_t* destination,
               size_t capacity) const noexcept;
 
   /// Checks a new value in wire representation without storing it: length (kLengthTooHigh,
   /// kLengthTooLow), BOOLEAN range (kInvalidValue), limits (kValueTooHigh, kValueTooLow).
   /// ROM entries and DOMAINs fail with kWriteOfReadOnly / kCannotStore.
-  AbortCode check(const SubEntry& entry, const uint8_t* source, size_t length) const noexcept;
+  AbortCode check(const EntryRef& ref, const uint8_t* source, size_t length) const noexcept;
 
   /// check() and, when it passes, stores the value. A VISIBLE_STRING shorter than its
   /// capacity is padded with zeros.
-  AbortCode write(const SubEntry& entry, const uint8_t* source, size_t length) noexcept;
+  AbortCode write(const EntryRef& ref, const uint8_t* source, size_t length) noexcept;
 
   /// Numeric value of an integer or boolean entry, widened (signed types sign-extended).
   /// Returns 0 for other types.
-  uint64_t readUnsigned(const SubEntry& entry) const noexcept;
-  int64_t readSigned(const SubEntry& entry) const noexcept;
+  uint64_t readUnsigned(const EntryRef& ref) const noexcept;
+  int64_t readSigned(const EntryRef& ref) const noexcept;
 
   /// Stores a numeric value without any check (the caller knows it is valid). No-op for ROM
   /// entries and non-integer types.
-  void storeUnsigned(const SubEntry& entry, uint64_t value) noexcept;
+  void storeUnsigned(const EntryRef& ref, uint64_t value) noexcept;
 
   /// Convenience lookups for the stack's own objects: value of (index, sub) or `fallback` when
   /// absent.
@@ -83,11 +75,16 @@ class ObjectDictionary {
   void restoreGroupDefaults(uint8_t group) noexcept;
 
   /// Address of a RAM entry's value (nullptr for ROM entries and DOMAINs).
-  uint8_t* ramAddress(const SubEntry& entry) noexcept;
-  const uint8_t* address(const SubEntry& entry) const noexcept;
+  uint8_t* ramAddress(const EntryRef& ref) noexcept;
+  /// Address of an entry's value in RAM or ROM (nullptr for DOMAINs). A `$NODEID` constant
+  /// holds its value without the node-id there.
+  const uint8_t* address(const EntryRef& ref) const noexcept;
 
  private:
-  void restoreEntry(const SubEntry& entry) noexcept;
+  /// Restores the defaults of every RAM row of `object` for which `wanted(row)` holds.
+  template <typename Wanted>
+  void restoreRows(const Object& object, Wanted wanted) noexcept;
+  void restoreRow(const SubEntry& row) noexcept;
 
   const Definition* definition_;
   uint8_t* values_;
