@@ -60,8 +60,7 @@ uint32_t defaultValue(const od::Definition& definition, const od::EntryRef& entr
 /// "not valid" and RTR / SYNC producer bits of COB-IDs).
 void valueTokens(std::string* out, const od::Definition& definition, const od::EntryRef& entry) {
   const uint8_t command = expeditedDownload(entry.size());
-  if (command == 0U || !entry.has(od::kWritable) || entry.inRom() ||
-      !od::isNumeric(entry.type())) {
+  if (command == 0U || !entry.has(od::kWritable) || entry.inRom() || !od::isNumeric(entry.type())) {
     return;
   }
   uint32_t values[6] = {0, defaultValue(definition, entry)};

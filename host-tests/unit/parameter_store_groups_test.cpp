@@ -107,13 +107,19 @@ struct ManyGroupsTables {
   static constexpr size_t kCount = ParameterStore::kMaxRegions;
   ManyGroupsTables() {
     for (uint8_t i = 0; i < kCount; ++i) {
-      subs[i] = od::SubEntry{0, 1, od::DataType::kUnsigned8, od::kReadable | od::kWritable,
-                             1, static_cast<uint8_t>(i + 1U), 0, i};
+      subs[i] = od::SubEntry{0,
+                             1,
+                             od::DataType::kUnsigned8,
+                             od::kReadable | od::kWritable,
+                             1,
+                             static_cast<uint8_t>(i + 1U),
+                             0,
+                             i};
       objects[i] =
           od::Object{static_cast<uint16_t>(0x2000U + i), od::ObjectCode::kVar, 1, &subs[i]};
     }
-    definition = od::Definition{objects, kCount, defaults, defaults, kCount, 0x1234U, "groups",
-                                nullptr, nullptr};
+    definition = od::Definition{objects, kCount,   defaults, defaults, kCount,
+                                0x1234U, "groups", nullptr,  nullptr};
   }
   od::SubEntry subs[kCount]{};
   od::Object objects[kCount]{};

@@ -229,11 +229,9 @@ TEST_F(SoloDictionaryTest, LimitsAcceptTheirBoundsAndRejectTheNextValue) {
     const size_t size = entry.size();
     const int64_t typeMin = isSigned(entry.type()) ? INT32_MIN : 0;
     const int64_t typeMax = isSigned(entry.type()) ? INT32_MAX : UINT32_MAX;
-    EXPECT_EQ(dictionary_.write(entry, wire(row.low, size).data(), size),
-              AbortCode::kNone);
+    EXPECT_EQ(dictionary_.write(entry, wire(row.low, size).data(), size), AbortCode::kNone);
     EXPECT_EQ(value(entry), row.low);
-    EXPECT_EQ(dictionary_.write(entry, wire(row.high, size).data(), size),
-              AbortCode::kNone);
+    EXPECT_EQ(dictionary_.write(entry, wire(row.high, size).data(), size), AbortCode::kNone);
     EXPECT_EQ(value(entry), row.high);
     if (row.low > typeMin) {
       EXPECT_EQ(dictionary_.write(entry, wire(row.low - 1, size).data(), size),

@@ -96,7 +96,7 @@ const Object* ObjectDictionary::findObject(uint16_t index) const noexcept {
     }
   }
   return low != definition_->objects + definition_->objectCount && low->index == index ? low
-                                                                                      : nullptr;
+                                                                                       : nullptr;
 }
 
 AbortCode ObjectDictionary::find(uint16_t index, uint8_t subIndex, EntryRef* out) const noexcept {

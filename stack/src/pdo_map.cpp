@@ -114,8 +114,7 @@ AbortCode PdoMap::unpack(ObjectAccess& access, const uint8_t* data) const noexce
   for (size_t i = 0; i < count_; ++i) {
     const Slot& slot = slots_[i];
     if (slot.ref.valid()) {
-      const AbortCode verdict =
-          access.dictionary().check(slot.ref, data + offset, slot.bytes);
+      const AbortCode verdict = access.dictionary().check(slot.ref, data + offset, slot.bytes);
       if (verdict != AbortCode::kNone) {
         return verdict;
       }

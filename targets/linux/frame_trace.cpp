@@ -91,8 +91,7 @@ std::string FrameTracer::formatValue(uint16_t index, uint8_t subIndex, const uin
   const uint64_t raw = loadLittleEndian(data, size);
   char buffer[64];
   if (od::isSigned(type)) {
-    std::snprintf(buffer, sizeof(buffer), "%lld",
-                  static_cast<long long>(signExtend(raw, size)));
+    std::snprintf(buffer, sizeof(buffer), "%lld", static_cast<long long>(signExtend(raw, size)));
   } else if (type == od::DataType::kReal32) {
     float value = 0.0F;
     const auto bits = static_cast<uint32_t>(raw);

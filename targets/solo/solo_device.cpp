@@ -38,8 +38,8 @@ uint32_t SoloDevice::readU32(uint16_t index) const noexcept {
 }
 
 double SoloDevice::readSfxt(uint16_t index) const noexcept {
-  return sfxtToDouble(static_cast<int32_t>(
-      node_.dictionary().readSigned(node_.dictionary().find(index, 0))));
+  return sfxtToDouble(
+      static_cast<int32_t>(node_.dictionary().readSigned(node_.dictionary().find(index, 0))));
 }
 
 void SoloDevice::storeSfxt(uint16_t index, double value) noexcept {

@@ -81,8 +81,7 @@ class ObjectHook {
     (void)length;
     (void)last;
     (void)indicatedSize;
-    return ref.type() == od::DataType::kDomain ? AbortCode::kCannotStore
-                                                    : AbortCode::kOutOfMemory;
+    return ref.type() == od::DataType::kDomain ? AbortCode::kCannotStore : AbortCode::kOutOfMemory;
   }
 
   /// A streamed write ends without a successful `last` call: the hook refused, the client or

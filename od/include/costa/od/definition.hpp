@@ -51,16 +51,16 @@ AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noe
 /// generator merges only fixed-size values stored back to back (array items, record members of
 /// one type). Use EntryRef for one sub-index's properties.
 struct SubEntry {
-  uint8_t subIndex;     ///< First sub-index of the row.
-  uint8_t count;        ///< Sub-indices in the row, 1..255.
-  DataType type;        ///< CiA 301 data type.
-  uint8_t attributes;   ///< Attribute bits.
-  uint16_t size;        ///< Bytes of one value; capacity for VISIBLE_STRING; 0 for DOMAIN.
-  uint8_t group;        ///< StorageGroup.
-  uint8_t limits;       ///< 0: no limits; else 1 + the row of Definition::limits.
-  uint16_t offset;      ///< Of the first value, in the RAM values block, or in the ROM
-                        ///< constants block when kInRom. The ROM defaults block has the
-                        ///< values' layout.
+  uint8_t subIndex;    ///< First sub-index of the row.
+  uint8_t count;       ///< Sub-indices in the row, 1..255.
+  DataType type;       ///< CiA 301 data type.
+  uint8_t attributes;  ///< Attribute bits.
+  uint16_t size;       ///< Bytes of one value; capacity for VISIBLE_STRING; 0 for DOMAIN.
+  uint8_t group;       ///< StorageGroup.
+  uint8_t limits;      ///< 0: no limits; else 1 + the row of Definition::limits.
+  uint16_t offset;     ///< Of the first value, in the RAM values block, or in the ROM
+                       ///< constants block when kInRom. The ROM defaults block has the
+                       ///< values' layout.
 };
 
 /// Object codes of CiA 301 (EDS ObjectType).
@@ -83,12 +83,12 @@ struct Object {
 struct Definition {
   const Object* objects;
   uint16_t objectCount;
-  const void* constants;   ///< ROM block holding `const` values.
-  const void* defaults;    ///< ROM block holding default values, laid out like the RAM block.
-  uint32_t valuesSize;     ///< Size of the RAM values block in bytes.
-  uint32_t layoutId;       ///< Identifies the layout of the stored groups (for stored images).
-  const char* deviceName;  ///< Name of the device description the tables were generated from.
-  const Limits* limits;    ///< Rows named by SubEntry::limits (null when none has limits).
+  const void* constants;      ///< ROM block holding `const` values.
+  const void* defaults;       ///< ROM block holding default values, laid out like the RAM block.
+  uint32_t valuesSize;        ///< Size of the RAM values block in bytes.
+  uint32_t layoutId;          ///< Identifies the layout of the stored groups (for stored images).
+  const char* deviceName;     ///< Name of the device description the tables were generated from.
+  const Limits* limits;       ///< Rows named by SubEntry::limits (null when none has limits).
   RealLimitCheck realLimits;  ///< Null unless a REAL entry has limits.
 };
 
