@@ -37,7 +37,7 @@ template <typename Visit>
 void forEachPdo(const Node& node, Visit visit) {
   const od::ObjectDictionary& dictionary = node.dictionary();
   const od::Definition& definition = dictionary.definition();
-  const bool cia301 = node.profile().pdoCobIdPolarity == PdoCobIdPolarity::kCia301;
+  const bool cia301 = node.profile().pdo.cobIdPolarity == PdoCobIdPolarity::kCia301;
   for (size_t i = 0; i < definition.objectCount; ++i) {
     const uint16_t index = definition.objects[i].index;
     const bool receive = index >= kFirstRpdo && index <= kLastRpdo;
@@ -57,7 +57,7 @@ void forEachPdo(const Node& node, Visit visit) {
 
 /// Whether a valid PDO may have CAN-ID `id`: the profile's range, else not restricted.
 bool pdoIdPermitted(const Node& node, bool receive, uint32_t id) {
-  const CanIdRange& range = receive ? node.profile().rpdoCanIds : node.profile().tpdoCanIds;
+  const CanIdRange& range = receive ? node.profile().pdo.rpdoCanIds : node.profile().pdo.tpdoCanIds;
   return range.restricts() ? range.contains(id) : !restrictedCanId(id);
 }
 

@@ -8,10 +8,10 @@ class ProfileVariant : public ExampleNodeTest {
  protected:
   static NodeSettings settings() {
     NodeSettings settings;
-    settings.profile.expeditedUpload = ExpeditedUploadFormat::kFourBytesSizeNotIndicated;
-    settings.profile.distinguishHighAndLowValues = false;
-    settings.profile.emcyOnErrorReset = false;
-    settings.profile.emcyForErrorControl = false;
+    settings.profile.sdo.expeditedUpload = ExpeditedUploadFormat::kFourBytesSizeNotIndicated;
+    settings.profile.sdo.distinguishHighAndLowValues = false;
+    settings.profile.emcy.errorResetFrame = false;
+    settings.profile.errorControl.emcyForErrors = false;
     return settings;
   }
   ProfileVariant() : ExampleNodeTest(settings()) {}

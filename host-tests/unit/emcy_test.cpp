@@ -121,7 +121,7 @@ class EmcyFourthByteLayout : public ExampleNodeTest {
  protected:
   static NodeSettings settings() {
     NodeSettings settings;
-    settings.profile.emcyLayout = EmcyLayout::kErrorRegisterInFourthByte;
+    settings.profile.emcy.layout = EmcyLayout::kErrorRegisterInFourthByte;
     return settings;
   }
   EmcyFourthByteLayout() : ExampleNodeTest(settings()) {}

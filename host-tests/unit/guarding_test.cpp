@@ -113,7 +113,7 @@ class GuardingToggleStartsAtOne : public ExampleNodeTest {
  protected:
   static NodeSettings settings() {
     NodeSettings settings;
-    settings.profile.guardToggleStart = 1;
+    settings.profile.errorControl.guardToggleStart = 1;
     return settings;
   }
   GuardingToggleStartsAtOne() : ExampleNodeTest(settings()) {}
@@ -134,7 +134,7 @@ class HeartbeatOnlyDevice : public ExampleNodeTest {
  protected:
   static NodeSettings settings() {
     NodeSettings settings;
-    settings.profile.nodeGuarding = false;
+    settings.profile.errorControl.nodeGuarding = false;
     return settings;
   }
   HeartbeatOnlyDevice() : ExampleNodeTest(settings()) {}

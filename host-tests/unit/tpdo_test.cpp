@@ -249,9 +249,9 @@ class TpdoSoloStyle : public ExampleNodeTest {
  protected:
   static NodeSettings settings() {
     NodeSettings settings;
-    settings.profile.tpdoRtrTypes = TpdoRtrTypes::kAllTypes;
-    settings.profile.tpdoType0 = TpdoType0::kEverySync;
-    settings.profile.tpdoOnEnteringOperational = true;
+    settings.profile.pdo.tpdoRtrTypes = TpdoRtrTypes::kAllTypes;
+    settings.profile.pdo.tpdoType0 = TpdoType0::kEverySync;
+    settings.profile.pdo.tpdoOnEnteringOperational = true;
     return settings;
   }
   TpdoSoloStyle() : ExampleNodeTest(settings()) {}

@@ -16,7 +16,7 @@ uint8_t errorRegisterBitFor(uint16_t code) noexcept {
   }
 }
 
-EmcyProducer::EmcyProducer(od::ObjectDictionary& dictionary, const DeviceProfile& profile,
+EmcyProducer::EmcyProducer(od::ObjectDictionary& dictionary, const EmcyProfile& profile,
                            EmcyCondition* conditions, size_t conditionCapacity,
                            PendingEmcy* pending, size_t pendingCapacity) noexcept
     : dictionary_(dictionary),
@@ -81,7 +81,7 @@ bool EmcyProducer::clear(uint16_t code, uint8_t source) noexcept {
       conditions_[i] = conditions_[count_ - 1U];
       --count_;
       publishRegister();
-      if (count_ == 0U && profile_.emcyOnErrorReset) {
+      if (count_ == 0U && profile_.errorResetFrame) {
         enqueue(0x0000, 0, nullptr);
       }
       return true;
@@ -134,7 +134,7 @@ void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
   }
   PendingEmcy& slot = pending_[(pendingHead_ + pendingCount_) % pendingCapacity_];
   slot = PendingEmcy{};
-  if (profile_.emcyLayout == EmcyLayout::kErrorRegisterInFourthByte) {
+  if (profile_.layout == EmcyLayout::kErrorRegisterInFourthByte) {
     slot.data[3] = registerValue;
   } else {
     storeLittleEndian(slot.data, code, 2);

@@ -21,11 +21,11 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       tx_(memory.txSlots, memory.txCapacity),
       hooks_(memory.hookSlots, memory.hookCapacity),
       access_(dictionary_, hooks_),
-      emcy_(dictionary_, settings_.profile, memory.emcyConditions, memory.emcyConditionCapacity,
+      emcy_(dictionary_, settings_.profile.emcy, memory.emcyConditions, memory.emcyConditionCapacity,
             memory.emcyQueue, memory.emcyQueueCapacity),
-      pdoContext_{access_, tx_,    settings_.profile,          emcy_,
+      pdoContext_{access_, tx_,    settings_.profile.pdo,          emcy_,
                   events_, clock_, settings_.staticPdoMappings},
-      sdo_(access_, tx_, settings_.profile, memory.sdoBuffer, memory.sdoBufferSize,
+      sdo_(access_, tx_, settings_.profile.sdo, memory.sdoBuffer, memory.sdoBufferSize,
            settings.sdoTimeout),
       heartbeat_(dictionary_, tx_, clock_),
       heartbeatConsumer_(dictionary_, memory.heartbeatMonitors, memory.heartbeatMonitorCapacity),
@@ -180,7 +180,7 @@ void Node::resetCommunication() noexcept {
   heartbeat_.setNodeId(nodeId_);
   emcy_.setNodeId(nodeId_);
   emcy_.onResetCommunication();
-  guarding_.reset(nodeId_, settings_.profile.guardToggleStart);
+  guarding_.reset(nodeId_, settings_.profile.errorControl.guardToggleStart);
   heartbeatConsumer_.configure(true);
   sync_.configure(clock_.now);
   pdos_.configure();

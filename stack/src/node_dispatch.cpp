@@ -61,13 +61,13 @@ bool Node::handleErrorControl(const CanFrame& frame) noexcept {
     if constexpr (!features::kNodeGuarding) {
       return false;  // a node without node guarding does not answer remote requests
     }
-    if (!settings_.profile.nodeGuarding) {
+    if (!settings_.profile.errorControl.nodeGuarding) {
       return false;  // a device with heartbeat only does not either
     }
     if (errorControlNodeId(frame) == nodeId_) {
       const NodeGuarding::Event event = guarding_.onRequest(state_, clock_.now);
       if (event == NodeGuarding::Event::kResumed) {
-        if (settings_.profile.emcyForErrorControl) {
+        if (settings_.profile.errorControl.emcyForErrors) {
           emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
         }
         if (events_ != nullptr) {
@@ -90,7 +90,7 @@ bool Node::handleErrorControl(const CanFrame& frame) noexcept {
 void Node::handleHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept {
   if (event.kind == HeartbeatConsumer::EventKind::kTimeout) {
     const uint8_t producer[5] = {event.nodeId, 0, 0, 0, 0};
-    if (settings_.profile.emcyForErrorControl) {
+    if (settings_.profile.errorControl.emcyForErrors) {
       emcy_.raise(kEmcyLifeGuardOrHeartbeat, event.entry, kErrorCommunication, producer);
     }
     if (events_ != nullptr) {
@@ -98,7 +98,7 @@ void Node::handleHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept 
     }
     onCommunicationError();
   } else if (event.kind == HeartbeatConsumer::EventKind::kResumed) {
-    if (settings_.profile.emcyForErrorControl) {
+    if (settings_.profile.errorControl.emcyForErrors) {
       emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
     }
     if (events_ != nullptr) {
@@ -124,7 +124,7 @@ Microseconds Node::process(Microseconds now) noexcept {
   if (state_ != NmtState::kInitialising) {
     heartbeat_.process(at, state_);
     if (guarding_.process(at) == NodeGuarding::Event::kLifeTimeExpired) {
-      if (settings_.profile.emcyForErrorControl) {
+      if (settings_.profile.errorControl.emcyForErrors) {
         emcy_.raise(kEmcyLifeGuardOrHeartbeat, 0, kErrorCommunication);
       }
       if (events_ != nullptr) {

@@ -7,12 +7,12 @@ namespace costa {
 namespace {
 
 // Sub-index 1, the COB-ID.
-AbortCode checkCobIdWrite(const DeviceProfile& profile, bool receive, bool currentlyValid,
+AbortCode checkCobIdWrite(const PdoProfile& profile, bool receive, bool currentlyValid,
                           uint32_t currentCanId, const uint8_t* data, size_t length) noexcept {
   if (length != 4U) {
     return AbortCode::kNone;  // the dictionary reports the length error
   }
-  const PdoCobId cob = decodePdoCobId(loadU32(data), profile.pdoCobIdPolarity);
+  const PdoCobId cob = decodePdoCobId(loadU32(data), profile.cobIdPolarity);
   if (cob.extended || cob.reservedBits) {
     return AbortCode::kInvalidValue;  // 29-bit CAN-IDs are not supported
   }
@@ -33,7 +33,7 @@ AbortCode checkCobIdWrite(const DeviceProfile& profile, bool receive, bool curre
 AbortCode PdoEngine::checkCommunicationWrite(bool receive, bool currentlyValid,
                                              uint32_t currentCanId, uint8_t subIndex,
                                              const uint8_t* data, size_t length) const noexcept {
-  const DeviceProfile& profile = context_.profile;
+  const PdoProfile& profile = context_.profile;
   switch (subIndex) {
     case 1: return checkCobIdWrite(profile, receive, currentlyValid, currentCanId, data, length);
     case 2: {

@@ -9,7 +9,7 @@ void RpdoChannel::configure(PdoContext& context) noexcept {
   const od::ObjectDictionary& dictionary = context.access.dictionary();
   const PdoCobId cob =
       decodePdoCobId(static_cast<uint32_t>(dictionary.readUnsigned(index_, 1, 0x80000000U)),
-                     context.profile.pdoCobIdPolarity);
+                     context.profile.cobIdPolarity);
   valid_ = cob.valid && !cob.extended;
   canId_ = cob.canId;
   type_ = static_cast<uint8_t>(dictionary.readUnsigned(index_, 2, 255));

@@ -6,7 +6,7 @@ void TpdoChannel::configure(PdoContext& context) noexcept {
   const od::ObjectDictionary& dictionary = context.access.dictionary();
   const PdoCobId cob =
       decodePdoCobId(static_cast<uint32_t>(dictionary.readUnsigned(index_, 1, 0x80000000U)),
-                     context.profile.pdoCobIdPolarity);
+                     context.profile.cobIdPolarity);
   valid_ = cob.valid && !cob.extended;
   rtrAllowed_ = cob.rtrAllowed;
   canId_ = cob.canId;

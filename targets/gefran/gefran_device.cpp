@@ -42,9 +42,9 @@ NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId,
   s.nodeId = nodeId;
   s.storage = storage;
   s.bitRateControl = bitRateControl;
-  s.profile.tpdoOnEnteringOperational = true;  // E17
-  s.profile.reportErrorRegister = false;       // E14
-  s.profile.nodeGuarding = false;              // E48: heartbeat only
+  s.profile.pdo.tpdoOnEnteringOperational = true;  // E17
+  s.profile.emcy.reportErrorRegister = false;       // E14
+  s.profile.errorControl.nodeGuarding = false;              // E48: heartbeat only
   s.lss = true;
   s.lssBitRates = kListedBitRates;
   s.storeAllGroups = groupBit(od::kGroupCommunication) | groupBit(od::kGroupApplication);  // E22

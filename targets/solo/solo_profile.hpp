@@ -29,17 +29,17 @@ inline constexpr StaticPdoMapping kPdoMappings[] = {
 /// through the device error register 0x3020 (S5).
 constexpr DeviceProfile profile() noexcept {
   DeviceProfile p{};
-  p.expeditedUpload = ExpeditedUploadFormat::kFourBytesSizeNotIndicated;
-  p.pdoCobIdPolarity = PdoCobIdPolarity::kBit31EnablesBit30AllowsRtr;
-  p.tpdoType0 = TpdoType0::kEverySync;
-  p.tpdoRtrTypes = TpdoRtrTypes::kAllTypes;
-  p.rpdoCanIds = CanIdRange{0x200, 0x27F};
-  p.tpdoCanIds = CanIdRange{0x280, 0x2FF};
-  p.emcyLayout = EmcyLayout::kErrorRegisterInFourthByte;
-  p.guardToggleStart = 1;
-  p.distinguishHighAndLowValues = false;
-  p.emcyOnErrorReset = false;
-  p.emcyForErrorControl = false;
+  p.sdo.expeditedUpload = ExpeditedUploadFormat::kFourBytesSizeNotIndicated;
+  p.pdo.cobIdPolarity = PdoCobIdPolarity::kBit31EnablesBit30AllowsRtr;
+  p.pdo.tpdoType0 = TpdoType0::kEverySync;
+  p.pdo.tpdoRtrTypes = TpdoRtrTypes::kAllTypes;
+  p.pdo.rpdoCanIds = CanIdRange{0x200, 0x27F};
+  p.pdo.tpdoCanIds = CanIdRange{0x280, 0x2FF};
+  p.emcy.layout = EmcyLayout::kErrorRegisterInFourthByte;
+  p.errorControl.guardToggleStart = 1;
+  p.sdo.distinguishHighAndLowValues = false;
+  p.emcy.errorResetFrame = false;
+  p.errorControl.emcyForErrors = false;
   return p;
 }
 

@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "costa/device_profile.hpp"
+#include "costa/emcy_profile.hpp"
 #include "costa/nmt_state.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/object_hook.hpp"
@@ -47,7 +47,7 @@ class EmcyProducer : public ObjectHook {
   static constexpr uint16_t kCobIdIndex = 0x1014;
   static constexpr uint16_t kInhibitIndex = 0x1015;
 
-  EmcyProducer(od::ObjectDictionary& dictionary, const DeviceProfile& profile,
+  EmcyProducer(od::ObjectDictionary& dictionary, const EmcyProfile& profile,
                EmcyCondition* conditions, size_t conditionCapacity, PendingEmcy* pending,
                size_t pendingCapacity) noexcept;
 
@@ -94,7 +94,7 @@ class EmcyProducer : public ObjectHook {
   uint32_t cobId() const noexcept;
 
   od::ObjectDictionary& dictionary_;
-  const DeviceProfile& profile_;
+  const EmcyProfile& profile_;
   EmcyCondition* conditions_;
   size_t capacity_;
   size_t count_ = 0;

@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "costa/device_profile.hpp"
+#include "costa/pdo_profile.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/object_access.hpp"
 #include "costa/pdo_map.hpp"
@@ -32,7 +32,7 @@ struct StaticPdoMappings {
 struct PdoContext {
   ObjectAccess& access;
   TxQueue& tx;
-  const DeviceProfile& profile;
+  const PdoProfile& profile;
   EmcyProducer& emcy;
   NodeEvents*& events;
   const NodeClock& clock;

@@ -7,7 +7,7 @@
 #include <stdint.h>
 
 #include "costa/compiled_out.hpp"
-#include "costa/device_profile.hpp"
+#include "costa/sdo_profile.hpp"
 #include "costa/features.hpp"
 #include "costa/object_access.hpp"
 #include "costa/port/can_frame.hpp"
@@ -26,7 +26,7 @@ class SdoServer {
   /// `buffer` holds a transfer's value; DOMAINs and values larger than the buffer are streamed
   /// through the entry's hook instead (ObjectHook::readStream/writeStream, sdo_streaming.hpp).
   /// `timeout` applies to every wait for the client.
-  SdoServer(ObjectAccess& access, TxQueue& tx, const DeviceProfile& profile, uint8_t* buffer,
+  SdoServer(ObjectAccess& access, TxQueue& tx, const SdoProfile& profile, uint8_t* buffer,
             size_t bufferSize, Microseconds timeout) noexcept;
 
   void setNodeId(uint8_t nodeId) noexcept { channel_.setNodeId(nodeId); }
@@ -91,7 +91,7 @@ class SdoServer {
 
   ObjectAccess& access_;
   SdoChannel channel_;
-  const DeviceProfile& profile_;
+  const SdoProfile& profile_;
   SdoValueReader reader_;
   SdoValueWriter writer_;
   ServiceIf<features::kSdoBlockTransfer, SdoBlockDownload, CompiledOut> blockDownload_;

@@ -1,0 +1,26 @@
+// How a device's EMCY producer encodes its frames and its error register (EmcyProducer, and the
+// Linux tracer). Every field defaults to CiA 301.
+#pragma once
+
+#include <stdint.h>
+
+namespace costa {
+
+/// Layout of an EMCY frame.
+enum class EmcyLayout : uint8_t {
+  /// CiA 301: error code (2 bytes, LE), error register, 5 manufacturer-specific bytes.
+  kCia301,
+  /// Bytes 0..2 zero, the error register in byte 3 (the 4th data byte), bytes 4..7 zero.
+  kErrorRegisterInFourthByte,
+};
+
+struct EmcyProfile {
+  EmcyLayout layout = EmcyLayout::kCia301;
+  /// An EMCY with error code 0x0000 when the last error condition clears (CiA 301).
+  bool errorResetFrame = true;
+  /// The error register 0x1001 (and the EMCY's register byte) reflects the active errors. When
+  /// false both always read 0 (a device that does not implement the register).
+  bool reportErrorRegister = true;
+};
+
+}  // namespace costa

@@ -1,0 +1,21 @@
+// How a device watches and is watched (node guarding, heartbeat consumer, controller events:
+// ErrorControl). Every field defaults to CiA 301.
+#pragma once
+
+#include <stdint.h>
+
+namespace costa {
+
+struct ErrorControlProfile {
+  /// The device answers node guarding (a remote request on 0x700 + node-id, CiA 301
+  /// 7.2.8.3.2.1). false: a device with heartbeat only; such remote requests are ignored (and
+  /// counted).
+  bool nodeGuarding = true;
+  /// Toggle bit of the first node-guarding reply after a reset communication (CiA 301: 0).
+  uint8_t guardToggleStart = 0;
+  /// The node reports life-guarding and heartbeat-consumer errors with EMCY 0x8130 itself; when
+  /// false only the listeners hear of them and the device reports them its own way.
+  bool emcyForErrors = true;
+};
+
+}  // namespace costa

@@ -1,0 +1,55 @@
+// How a device's PDOs behave (PdoEngine and its channels, and the Linux tracer). Every field
+// defaults to CiA 301.
+#pragma once
+
+#include <stdint.h>
+
+namespace costa {
+
+/// Meaning of bits 31 and 30 of a PDO COB-ID (sub-index 1 of 0x1400+/0x1800+).
+enum class PdoCobIdPolarity : uint8_t {
+  /// CiA 301: bit 31 = 1 means "PDO does not exist / not valid"; bit 30 = 1 means "no RTR
+  /// allowed on this PDO".
+  kCia301,
+  /// The opposite: bit 31 = 1 enables the PDO, bit 30 = 1 allows RTR.
+  kBit31EnablesBit30AllowsRtr,
+};
+
+/// What TPDO transmission type 0 means.
+enum class TpdoType0 : uint8_t {
+  /// CiA 301: synchronous acyclic: sent at a SYNC only when the application signalled an event
+  /// since the previous SYNC.
+  kAcyclicOnEvent,
+  /// Sent at every SYNC.
+  kEverySync,
+};
+
+/// Which TPDO transmission types answer a remote request (when the COB-ID allows RTR).
+enum class TpdoRtrTypes : uint8_t {
+  /// RTR-only types 252 and 253 and the event-driven types 254 and 255.
+  kCia301,
+  /// Additionally the synchronous types 0..240.
+  kAllTypes,
+};
+
+/// An inclusive range of CAN-IDs; {0, 0} means "no device-specific restriction".
+struct CanIdRange {
+  uint16_t first = 0;
+  uint16_t last = 0;
+  constexpr bool restricts() const noexcept { return first != 0U || last != 0U; }
+  constexpr bool contains(uint32_t id) const noexcept { return id >= first && id <= last; }
+};
+
+struct PdoProfile {
+  PdoCobIdPolarity cobIdPolarity = PdoCobIdPolarity::kCia301;
+  TpdoType0 tpdoType0 = TpdoType0::kAcyclicOnEvent;
+  TpdoRtrTypes tpdoRtrTypes = TpdoRtrTypes::kCia301;
+  /// CAN-IDs an RPDO/TPDO may be given in addition to CiA 301's restricted-ID rule.
+  CanIdRange rpdoCanIds{};
+  CanIdRange tpdoCanIds{};
+  /// Event-driven TPDOs (254/255) are sent once when the node enters OPERATIONAL. CiA 301 does
+  /// not ask for it (events and the event timer trigger them), so the default is off.
+  bool tpdoOnEnteringOperational = false;
+};
+
+}  // namespace costa
