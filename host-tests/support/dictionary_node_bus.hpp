@@ -21,7 +21,9 @@ class DictionaryNodeBus : public TranscriptBus {
                     NodeEvents* events = nullptr)
       : node_(definition, can_, settings) {
     NoAllocationScope scope;
-    node_.setEvents(events);
+    if (events != nullptr) {
+      EXPECT_TRUE(node_.addListener(*events));
+    }
     node_.start(now_);
     runProcess();
   }

@@ -37,7 +37,7 @@ class LssBitRateSwitch : public ::testing::Test {
   LssBitRateSwitch() : bus_(exampleWith(settingsWith(&rate_))) {
     rate_.clock = [this] { return bus_.now(); };
     rate_.framesSent = [this] { return bus_.can().count(); };
-    bus_.node().setEvents(&events_);
+    EXPECT_TRUE(bus_.node().addListener(events_));
   }
 
   void SetUp() override {

@@ -55,7 +55,7 @@ class LifeGuardEvents : public NodeEvents {
 
 TEST_F(ProfileVariant, ErrorControlEventsWithoutEmcy) {
   LifeGuardEvents events;
-  bus_.node().setEvents(&events);
+  ASSERT_TRUE(bus_.node().addListener(events));
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2B 0C 10 00 0A 00 00 00
     tx 581 [8] 60 0C 10 00 00 00 00 00

@@ -39,7 +39,7 @@ class RecordingGuardEvents : public NodeEvents {
 
 TEST_F(Guarding, LifeTimeExpiryRaisesEmcy8130AndEntersPreOperational) {
   RecordingGuardEvents events;
-  bus_.node().setEvents(&events);
+  ASSERT_TRUE(bus_.node().addListener(events));
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2B 0C 10 00 64 00 00 00   # guard time 100 ms
     tx 581 [8] 60 0C 10 00 00 00 00 00

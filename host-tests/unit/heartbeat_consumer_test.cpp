@@ -18,7 +18,7 @@ class RecordingHeartbeatEvents : public NodeEvents {
 
 TEST_F(HeartbeatConsumerTest, TimeoutAfterTheFirstHeartbeatAndReturn) {
   RecordingHeartbeatEvents events;
-  bus_.node().setEvents(&events);
+  ASSERT_TRUE(bus_.node().addListener(events));
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 23 16 10 01 64 00 05 00   # node 5, 100 ms
     tx 581 [8] 60 16 10 01 00 00 00 00

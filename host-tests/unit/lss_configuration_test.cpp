@@ -153,8 +153,9 @@ class InertHost : public LssSlaveHost {};
 
 TEST(LssSlaveDefaults, TheDefaultHostSupportsNoBitTimingCannotStoreAndNeverResets) {
   InertHost host;
+  port::RecordingCan can;
   QueuedFrame slots[4];
-  TxQueue tx(slots, 4);
+  TransmitPath tx(can, slots, 4);
   LssSlave slave(tx, host);
   NoAllocationScope scope;
   slave.reset(kIdentity, 0xFF, 0xFF, LssBitTiming{});
@@ -167,12 +168,13 @@ TEST(LssSlaveDefaults, TheDefaultHostSupportsNoBitTimingCannotStoreAndNeverReset
   EXPECT_TRUE(request(0x13, 0x00, 0x02));
   EXPECT_TRUE(request(0x17, 0x00, 0x00));
   const uint8_t expected[][2] = {{0x11, 0x00}, {0x13, 0x01}, {0x17, 0x01}};
-  ASSERT_EQ(tx.size(), 3U);
+  ASSERT_EQ(can.count(), 3U);
+  size_t sent = 0;
   for (const auto& response : expected) {
-    EXPECT_EQ(tx.front().frame.id, 0x7E4U);
-    EXPECT_EQ(tx.front().frame.data[0], response[0]);
-    EXPECT_EQ(tx.front().frame.data[1], response[1]);
-    tx.pop();
+    EXPECT_EQ(can.at(sent).id, 0x7E4U);
+    EXPECT_EQ(can.at(sent).data[0], response[0]);
+    EXPECT_EQ(can.at(sent).data[1], response[1]);
+    ++sent;
   }
   EXPECT_TRUE(request(0x15, 0x00, 0x00));  // activate with zero delay
   slave.process(0);
@@ -180,7 +182,7 @@ TEST(LssSlaveDefaults, TheDefaultHostSupportsNoBitTimingCannotStoreAndNeverReset
   EXPECT_TRUE(request(0x04, 0x00, 0x00));  // a first node-id, but nobody resets
   EXPECT_EQ(slave.activeNodeId(), 0xFFU);
   EXPECT_EQ(slave.pendingNodeId(), 0x09U);
-  EXPECT_TRUE(tx.empty());
+  EXPECT_EQ(can.count(), sent);
 }
 
 }  // namespace

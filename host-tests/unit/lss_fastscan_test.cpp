@@ -14,12 +14,15 @@ namespace {
 /// One device on the simulated bus: an LSS slave, its transmit queue and a host that performs
 /// reset communication the way a node does.
 struct SimulatedDevice {
-  SimulatedDevice(const LssIdentity& identity, uint8_t nodeId) : tx(slots, 4), slave(tx, host) {
+  SimulatedDevice(const LssIdentity& identity, uint8_t nodeId)
+      : tx(can, slots, 4), slave(tx, host) {
     host.slave = &slave;
     slave.reset(identity, nodeId, nodeId, LssBitTiming{});
   }
+  port::RecordingCan can;
+  size_t cursor = 0;
   QueuedFrame slots[4];
-  TxQueue tx;
+  TransmitPath tx;
   RecordingLssHost host;
   LssSlave slave;
   int framesSent = 0;
@@ -46,9 +49,8 @@ class SimulatedBus {
         NoAllocationScope scope;
         device->slave.onFrame(frame, 0);
       }
-      while (!device->tx.empty()) {
-        const CanFrame response = device->tx.front().frame;
-        device->tx.pop();
+      while (device->cursor < device->can.count()) {
+        const CanFrame response = device->can.at(device->cursor++);
         ++device->framesSent;
         const CanFrame expected{0x7E4, 8, false, false, {expectedCs, expectedByte1}};
         EXPECT_TRUE(sameOnWire(response, expected))

@@ -126,7 +126,7 @@ class BitTimingEvents : public NodeEvents {
 TEST(LssNode, ActivateBitTimingSilencesTheNodeAndTellsTheApplication) {
   InProcessBus bus(exampleWith(lssSettings(1)));
   BitTimingEvents events;
-  bus.node().setEvents(&events);
+  ASSERT_TRUE(bus.node().addListener(events));
   EXPECT_EQ(playText(R"(
     tx 701 [1] 00
     rx 601 [8] 2B 17 10 00 0A 00 00 00   # heartbeat 10 ms

@@ -24,8 +24,9 @@ TEST_F(LssSlaveTest, StartsInWaitingStateWithTheGivenNodeIds) {
 
 TEST(LssSlaveConstruction, BeforeResetItIsANonConfiguredSlaveInWaitingState) {
   RecordingLssHost host;
+  port::RecordingCan can;
   QueuedFrame slots[2];
-  TxQueue tx(slots, 2);
+  TransmitPath tx(can, slots, 2);
   const LssSlave slave(tx, host);
   EXPECT_EQ(slave.state(), LssState::kWaiting);
   EXPECT_EQ(slave.activeNodeId(), 0xFFU);
@@ -210,7 +211,7 @@ TEST_F(LssSlaveTest, ADataLengthCodeAbove8IsIgnored) {
   frame.dlc = 255;
   bus_.send(frame);
   EXPECT_FALSE(bus_.accepted());
-  EXPECT_TRUE(bus_.tx().empty());
+  EXPECT_EQ(bus_.unread(), 0U);
 }
 
 TEST_F(LssSlaveTest, RemoteFramesAreIgnoredWhateverTheirData) {
@@ -222,7 +223,7 @@ TEST_F(LssSlaveTest, RemoteFramesAreIgnoredWhateverTheirData) {
   bus_.send(toWaiting);
   EXPECT_FALSE(bus_.accepted());
   EXPECT_TRUE(slave().configurationState());
-  EXPECT_TRUE(bus_.tx().empty());
+  EXPECT_EQ(bus_.unread(), 0U);
 }
 
 TEST_F(LssSlaveTest, UnknownCommandSpecifiersAreIgnoredInBothStates) {
@@ -248,7 +249,7 @@ TEST_F(LssSlaveTest, UnknownCommandSpecifiersAreIgnoredInBothStates) {
       bus_.send(frame);
       EXPECT_FALSE(bus_.accepted()) << std::hex << cs;
     }
-    EXPECT_TRUE(bus_.tx().empty());
+    EXPECT_EQ(bus_.unread(), 0U);
     EXPECT_EQ(slave().configurationState(), configuration);
     EXPECT_EQ(slave().pendingNodeId(), 0xFFU);
   }
@@ -256,11 +257,12 @@ TEST_F(LssSlaveTest, UnknownCommandSpecifiersAreIgnoredInBothStates) {
 
 TEST_F(LssSlaveTest, AFullTransmitQueueDropsTheResponseAndCountsIt) {
   enterConfiguration();
+  bus_.can().setAccepting(false);  // the controller takes nothing: responses queue up
   for (size_t i = 0; i < LssBus::kQueueDepth + 2U; ++i) {
     bus_.send(CanFrame{0x7E5, 8, false, false, {0x5E}});
     EXPECT_TRUE(bus_.accepted());
   }
-  EXPECT_EQ(bus_.tx().size(), LssBus::kQueueDepth);
+  EXPECT_EQ(bus_.tx().queued(), LssBus::kQueueDepth);
   EXPECT_EQ(bus_.tx().dropped(), 2U);
 }
 

@@ -8,6 +8,7 @@
 
 #include "allocation_guard.hpp"
 #include "costa/lss_slave.hpp"
+#include "costa/port/memory/recording_can.hpp"
 #include "transcript_player.hpp"
 
 namespace costa::test {
@@ -69,7 +70,7 @@ class LssBus : public TranscriptBus {
  public:
   static constexpr size_t kQueueDepth = 8;
 
-  LssBus() : tx_(slots_, kQueueDepth), slave_(tx_, host_) { host_.clock = &now_; }
+  LssBus() : tx_(can_, slots_, kQueueDepth), slave_(tx_, host_) { host_.clock = &now_; }
 
   void send(const CanFrame& frame) override {
     NoAllocationScope scope;
@@ -78,11 +79,10 @@ class LssBus : public TranscriptBus {
 
   bool receive(CanFrame* frame, int timeoutMs) override {
     (void)timeoutMs;
-    if (tx_.empty()) {
+    if (cursor_ == can_.count()) {
       return false;
     }
-    *frame = tx_.front().frame;
-    tx_.pop();
+    *frame = can_.at(cursor_++);
     return true;
   }
 
@@ -117,14 +117,19 @@ class LssBus : public TranscriptBus {
 
   LssSlave& slave() { return slave_; }
   RecordingLssHost& host() { return host_; }
-  TxQueue& tx() { return tx_; }
+  TransmitPath& tx() { return tx_; }
+  port::RecordingCan& can() { return can_; }
+  /// Frames the slave sent that receive() has not returned yet.
+  size_t unread() const { return can_.count() - cursor_; }
   Microseconds now() const { return now_; }
   /// What onFrame() returned for the last frame sent.
   bool accepted() const { return accepted_; }
 
  private:
+  port::RecordingCan can_;
+  size_t cursor_ = 0;
   QueuedFrame slots_[kQueueDepth];
-  TxQueue tx_;
+  TransmitPath tx_;
   RecordingLssHost host_;
   LssSlave slave_;
   Microseconds now_ = 0;

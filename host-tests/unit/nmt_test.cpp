@@ -114,7 +114,7 @@ class RecordingEvents : public NodeEvents {
 
 TEST_F(Nmt, ApplicationHearsStateChangesAndMayStartItself) {
   RecordingEvents events;
-  bus_.node().setEvents(&events);
+  ASSERT_TRUE(bus_.node().addListener(events));
   EXPECT_EQ(play("rx 000 [2] 01 01"), "");
   EXPECT_EQ(events.last, NmtState::kOperational);
   EXPECT_EQ(events.changes, 1);

@@ -133,7 +133,7 @@ class RecordingRpdoEvents : public NodeEvents {
 
 TEST_F(Rpdo, TheApplicationHearsOfReceivedAndMissingPdos) {
   RecordingRpdoEvents events;
-  bus_.node().setEvents(&events);
+  ASSERT_TRUE(bus_.node().addListener(events));
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2B 01 14 05 0A 00 00 00   # RPDO2 event timer 10 ms
     tx 581 [8] 60 01 14 05 00 00 00 00

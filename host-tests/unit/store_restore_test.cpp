@@ -34,7 +34,7 @@ class StoreRestore : public ::testing::Test {
     bus_ = std::make_unique<InProcessBus>([&](CanTransmitter& can) {
       auto target = factory(can);
       if (events != nullptr) {
-        target->node().setEvents(events);
+        EXPECT_TRUE(target->node().addListener(*events));
       }
       return target;
     });

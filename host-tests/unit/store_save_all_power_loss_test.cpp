@@ -76,7 +76,7 @@ std::unique_ptr<InProcessBus> powerOn(Storage& storage, NodeEvents* events = nul
   auto bus = std::make_unique<InProcessBus>([&](CanTransmitter& can) {
     auto target = factory(can);
     if (events != nullptr) {
-      target->node().setEvents(events);
+      EXPECT_TRUE(target->node().addListener(*events));
     }
     return target;
   });

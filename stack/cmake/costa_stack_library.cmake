@@ -42,8 +42,12 @@ get_filename_component(COSTA_STACK_DIR "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 # Every build of the stack has these.
 set(COSTA_STACK_CORE_SOURCES
   emcy_producer.cpp
+  error_control.cpp
+  frame_router.cpp
   heartbeat_producer.cpp
+  lss_bridge.cpp
   nmt_slave.cpp
+  nmt_state_machine.cpp
   node.cpp
   node_dispatch.cpp
   object_access.cpp
@@ -55,8 +59,10 @@ set(COSTA_STACK_CORE_SOURCES
   sdo_server.cpp
   sdo_value_reader.cpp
   sdo_value_writer.cpp
+  stored_parameters.cpp
   sync_service.cpp
-  tpdo_channel.cpp)
+  tpdo_channel.cpp
+  transmit_path.cpp)
 # The sources of each optional feature.
 set(COSTA_STACK_SDO_BLOCK_SOURCES sdo_block_download.cpp sdo_block_upload.cpp sdo_server_block.cpp)
 set(COSTA_STACK_LSS_SOURCES lss_identification.cpp lss_slave.cpp)

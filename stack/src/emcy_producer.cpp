@@ -17,10 +17,11 @@ uint8_t errorRegisterBitFor(uint16_t code) noexcept {
 }
 
 EmcyProducer::EmcyProducer(od::ObjectDictionary& dictionary, const EmcyProfile& profile,
-                           EmcyCondition* conditions, size_t conditionCapacity,
+                           NodeClock& clock, EmcyCondition* conditions, size_t conditionCapacity,
                            PendingEmcy* pending, size_t pendingCapacity) noexcept
     : dictionary_(dictionary),
       profile_(profile),
+      clock_(clock),
       conditions_(conditions),
       capacity_(conditionCapacity),
       pending_(pending),
@@ -68,6 +69,8 @@ bool EmcyProducer::raise(uint16_t code, uint8_t source, uint8_t registerBits,
   const bool stored = count_ < capacity_;
   if (stored) {
     conditions_[count_++] = EmcyCondition{code, source, registerBits};
+  } else {
+    ++conditionsFull_;
   }
   publishRegister();
   record(code, manufacturer);
@@ -132,7 +135,11 @@ void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
     ++lost_;
     return;
   }
-  PendingEmcy& slot = pending_[(pendingHead_ + pendingCount_) % pendingCapacity_];
+  size_t tail = pendingHead_ + pendingCount_;
+  if (tail >= pendingCapacity_) {
+    tail -= pendingCapacity_;
+  }
+  PendingEmcy& slot = pending_[tail];
   slot = PendingEmcy{};
   if (profile_.layout == EmcyLayout::kErrorRegisterInFourthByte) {
     slot.data[3] = registerValue;
@@ -144,13 +151,14 @@ void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
     }
   }
   ++pendingCount_;
+  clock_.schedule(nextAllowed_);
 }
 
 uint32_t EmcyProducer::cobId() const noexcept {
   return static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, cob::kEmcyBase + nodeId_));
 }
 
-void EmcyProducer::process(Microseconds now, NmtState state, TxQueue& tx) noexcept {
+void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) noexcept {
   if (state != NmtState::kPreOperational && state != NmtState::kOperational) {
     return;
   }
@@ -167,8 +175,8 @@ void EmcyProducer::process(Microseconds now, NmtState state, TxQueue& tx) noexce
     for (size_t i = 0; i < 8U; ++i) {
       frame.data[i] = pending_[pendingHead_].data[i];
     }
-    tx.push(frame);
-    pendingHead_ = (pendingHead_ + 1U) % pendingCapacity_;
+    tx.send(frame);
+    pendingHead_ = pendingHead_ + 1U == pendingCapacity_ ? 0U : pendingHead_ + 1U;
     --pendingCount_;
     nextAllowed_ = now + inhibit;
   }

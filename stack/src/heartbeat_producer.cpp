@@ -7,6 +7,7 @@ namespace costa {
 void HeartbeatProducer::restart(Microseconds now) noexcept {
   period_ = millisecondsToMicroseconds(dictionary_.readUnsigned(kIndex, 0, 0));
   next_ = period_ == 0U ? kNever : now + period_;
+  clock_.schedule(next_);
 }
 
 void HeartbeatProducer::process(Microseconds now, NmtState state) noexcept {
@@ -17,7 +18,7 @@ void HeartbeatProducer::process(Microseconds now, NmtState state) noexcept {
   frame.id = cob::kErrorControlBase + nodeId_;
   frame.dlc = 1;
   frame.data[0] = static_cast<uint8_t>(state);
-  tx_.push(frame);
+  tx_.send(frame);
   next_ += period_;
   if (next_ <= now) {  // late by more than a period: keep the rhythm from now on
     next_ = now + period_;

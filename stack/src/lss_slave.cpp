@@ -21,7 +21,7 @@ bool definedBitTiming(LssBitTiming timing) {
 
 }  // namespace
 
-LssSlave::LssSlave(TxQueue& tx, LssSlaveHost& host) noexcept : tx_(tx), host_(host) {}
+LssSlave::LssSlave(TransmitPath& tx, LssSlaveHost& host) noexcept : tx_(tx), host_(host) {}
 
 void LssSlave::reset(const LssIdentity& identity, uint8_t activeNodeId, uint8_t pendingNodeId,
                      LssBitTiming bitTiming) noexcept {
@@ -202,7 +202,7 @@ void LssSlave::respond(uint8_t cs, uint8_t byte1) noexcept {
   frame.dlc = 8;
   frame.data[0] = cs;
   frame.data[1] = byte1;
-  tx_.push(frame);
+  tx_.send(frame);
 }
 
 void LssSlave::respondValue(uint8_t cs, uint32_t value) noexcept {
@@ -211,7 +211,7 @@ void LssSlave::respondValue(uint8_t cs, uint32_t value) noexcept {
   frame.dlc = 8;
   frame.data[0] = cs;
   storeLittleEndian(frame.data + 1, value, 4);
-  tx_.push(frame);
+  tx_.send(frame);
 }
 
 }  // namespace costa

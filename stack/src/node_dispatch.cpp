@@ -1,177 +1,137 @@
-// Node: received frames to services, timers, and the transmit path.
+// Node: received frames to their services through the routing table, and the processing of
+// what is due.
 #include "costa/cob_ids.hpp"
-#include "costa/nmt_slave.hpp"
 #include "costa/node.hpp"
 
 namespace costa {
-namespace {
 
-// The node-id an error control frame (0x701..0x77F) comes from or is addressed to.
-uint8_t errorControlNodeId(const CanFrame& frame) noexcept {
-  return static_cast<uint8_t>(frame.id - cob::kErrorControlBase);
+void Node::buildRoutes() noexcept {
+  router_.clear();
+  if (features::kLss && settings_.lss) {
+    router_.add(cob::kLssFromMaster, Route::kLss);
+  }
+  const uint8_t id = nmt_.nodeId();
+  if (id == cob::kLssUnconfigured) {
+    return;  // LSS only until the node has a node-id
+  }
+  router_.add(cob::kNmt, Route::kNmt);
+  router_.add(static_cast<uint16_t>(cob::kSdoRxBase + id), Route::kSdo);
+  router_.add(static_cast<uint16_t>(sync_.canId()), Route::kSync);
+  for (size_t i = 0; i < pdos_.rpdoCount(); ++i) {
+    const RpdoChannel& rpdo = pdos_.rpdo(i);
+    if (rpdo.valid()) {
+      router_.add(static_cast<uint16_t>(rpdo.canId()), Route::kRpdo, static_cast<uint8_t>(i));
+    }
+  }
+  for (size_t i = 0; i < pdos_.tpdoCount(); ++i) {
+    const TpdoChannel& tpdo = pdos_.tpdo(i);
+    if (tpdo.valid()) {
+      router_.add(static_cast<uint16_t>(tpdo.canId()), Route::kTpdoRequest,
+                  static_cast<uint8_t>(i));
+    }
+  }
 }
 
-}  // namespace
-
 void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
-  advanceClock(now);
+  clock_.advance(now);
   if (frame.dlc > 8U || frame.extended) {
-    ++statistics_.framesIgnored;
+    ++framesIgnored_;
     return;
   }
+  if (router_.stale()) {
+    buildRoutes();
+  }
   bool used = false;
-  if (features::kLss && frame.id == cob::kLssFromMaster && settings_.lss) {
-    used = lss_.onFrame(frame, clock_.now);
-  } else if (nodeId_ == cob::kLssUnconfigured) {
-    used = false;  // LSS only until the node has a node-id
-  } else if (frame.id == cob::kNmt) {
-    const NmtSlave::Decision decision = NmtSlave::decide(frame, nodeId_, state_);
-    used = true;
-    switch (decision.action) {
-      case NmtSlave::Action::kEnterState: setState(decision.state); break;
-      case NmtSlave::Action::kResetNode: resetNode(); break;
-      case NmtSlave::Action::kResetCommunication: resetCommunication(); break;
-      case NmtSlave::Action::kNone: break;
+  const uint8_t id = nmt_.nodeId();
+  if (frame.id > cob::kErrorControlBase && frame.id <= cob::kErrorControlBase + 127U) {
+    used = id != cob::kLssUnconfigured && nmt_.state() != NmtState::kInitialising &&
+           errorControl_.onFrame(frame, id);
+  } else {
+    const RouteEntry* entry = router_.find(frame.id);
+    for (; entry != nullptr && entry != router_.end() && entry->id == frame.id; ++entry) {
+      used = route(*entry, frame) || used;
+      if (router_.stale()) {
+        break;  // a reset rebuilt the table under our feet
+      }
     }
-  } else if (state_ != NmtState::kInitialising) {
-    const bool preOrOperational =
-        state_ == NmtState::kPreOperational || state_ == NmtState::kOperational;
-    if (frame.id > cob::kErrorControlBase && frame.id <= cob::kErrorControlBase + 127U) {
-      used = handleErrorControl(frame);
-    } else if (preOrOperational && sync_.accepts(frame)) {
+  }
+  if (!used) {
+    ++framesIgnored_;
+  }
+}
+
+bool Node::route(const RouteEntry& entry, const CanFrame& frame) noexcept {
+  switch (entry.route) {
+    case Route::kNmt: return nmt_.onCommand(frame);
+    case Route::kLss: {
+      const bool used = lss_.onFrame(frame, clock_.now);
+      tx_.setGate(TransmitPath::kBitTiming, lss_.transmissionSuspended());
+      clock_.schedule(lss_.nextDeadline());
+      return used;
+    }
+    case Route::kSync: {
+      if (frame.rtr || !preOrOperational()) {
+        return false;
+      }
       SyncEvent sync;
       if (sync_.onFrame(frame, clock_.now, &sync)) {
         handleSync(sync);
       }
-      used = true;
-    } else if (preOrOperational && frame.id == cob::kSdoRxBase + nodeId_) {
-      used = sdo_.onRequest(frame, clock_.now);
-    } else if (state_ == NmtState::kOperational) {
-      used = pdos_.onFrame(frame, clock_.now);
+      return true;
     }
-  }
-  if (!used) {
-    ++statistics_.framesIgnored;
-  }
-  process(clock_.now);
-}
-
-bool Node::handleErrorControl(const CanFrame& frame) noexcept {
-  if (frame.rtr) {
-    if constexpr (!features::kNodeGuarding) {
-      return false;  // a node without node guarding does not answer remote requests
-    }
-    if (!settings_.profile.errorControl.nodeGuarding) {
-      return false;  // a device with heartbeat only does not either
-    }
-    if (errorControlNodeId(frame) == nodeId_) {
-      const NodeGuarding::Event event = guarding_.onRequest(state_, clock_.now);
-      if (event == NodeGuarding::Event::kResumed) {
-        if (settings_.profile.errorControl.emcyForErrors) {
-          emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
-        }
-        if (events_ != nullptr) {
-          events_->onLifeGuardingResumed();
-        }
+    case Route::kSdo: {
+      if (!preOrOperational()) {
+        return false;
       }
+      const bool used = sdo_.onRequest(frame, clock_.now);
+      clock_.schedule(sdo_.nextDeadline());
+      return used;
     }
-    return true;
+    case Route::kRpdo:
+      return !frame.rtr && nmt_.state() == NmtState::kOperational &&
+             pdos_.receive(entry.channel, frame, clock_.now);
+    case Route::kTpdoRequest:
+      return frame.rtr && nmt_.state() == NmtState::kOperational &&
+             pdos_.remoteRequest(entry.channel, clock_.now);
   }
-  if constexpr (!features::kHeartbeatConsumer) {
-    return false;  // nobody here listens to heartbeats
-  }
-  const uint8_t producer = errorControlNodeId(frame);
-  if (frame.dlc == 1U && producer != nodeId_) {
-    handleHeartbeatEvent(heartbeatConsumer_.onHeartbeat(producer, frame.data[0], clock_.now));
-  }
-  return true;
-}
-
-void Node::handleHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept {
-  if (event.kind == HeartbeatConsumer::EventKind::kTimeout) {
-    const uint8_t producer[5] = {event.nodeId, 0, 0, 0, 0};
-    if (settings_.profile.errorControl.emcyForErrors) {
-      emcy_.raise(kEmcyLifeGuardOrHeartbeat, event.entry, kErrorCommunication, producer);
-    }
-    if (events_ != nullptr) {
-      events_->onHeartbeatTimeout(event.nodeId);
-    }
-    onCommunicationError();
-  } else if (event.kind == HeartbeatConsumer::EventKind::kResumed) {
-    if (settings_.profile.errorControl.emcyForErrors) {
-      emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
-    }
-    if (events_ != nullptr) {
-      events_->onHeartbeatResumed(event.nodeId);
-    }
-  }
+  return false;
 }
 
 void Node::handleSync(const SyncEvent& sync) noexcept {
-  if (state_ == NmtState::kOperational) {
+  if (nmt_.state() == NmtState::kOperational) {
     pdos_.onSync(sync.counter, sync.time, sync.windowEnd);
   }
-  if (events_ != nullptr) {
-    events_->onSync(sync.counter);
-  }
+  listeners_.notify([&sync](NodeEvents& listener) { listener.onSync(sync.counter); });
 }
 
-Microseconds Node::process(Microseconds now) noexcept {
-  advanceClock(now);
+Microseconds Node::runDue() noexcept {
   const Microseconds at = clock_.now;
   sdo_.process(at);
   lss_.process(at);
-  if (state_ != NmtState::kInitialising) {
-    heartbeat_.process(at, state_);
-    if (guarding_.process(at) == NodeGuarding::Event::kLifeTimeExpired) {
-      if (settings_.profile.errorControl.emcyForErrors) {
-        emcy_.raise(kEmcyLifeGuardOrHeartbeat, 0, kErrorCommunication);
-      }
-      if (events_ != nullptr) {
-        events_->onLifeGuardingExpired();
-      }
-      onCommunicationError();
-    }
-    for (;;) {
-      const HeartbeatConsumer::Event event = heartbeatConsumer_.process(at);
-      if (event.kind == HeartbeatConsumer::EventKind::kNone) {
-        break;
-      }
-      handleHeartbeatEvent(event);
-    }
+  tx_.setGate(TransmitPath::kBitTiming, lss_.transmissionSuspended());
+  const NmtState state = nmt_.state();
+  if (state != NmtState::kInitialising) {
+    heartbeat_.process(at, nmt_.state());
+    errorControl_.process(at);
     SyncEvent sync;
-    const bool preOrOperational =
-        state_ == NmtState::kPreOperational || state_ == NmtState::kOperational;
-    if (sync_.process(at, preOrOperational, &sync)) {
+    if (sync_.process(at, preOrOperational(), &sync)) {
       handleSync(sync);
     }
     pdos_.process(at);
-    emcy_.process(at, state_, tx_);
+    emcy_.process(at, nmt_.state(), tx_);
+    nmt_.process();
   }
-  flushTx();
+  tx_.flush(at);
   Microseconds next = earliest(sdo_.nextDeadline(), heartbeat_.nextDeadline());
-  next = earliest(next, guarding_.nextDeadline());
-  next = earliest(next, heartbeatConsumer_.nextDeadline());
+  next = earliest(next, errorControl_.nextDeadline());
   next = earliest(next, sync_.nextDeadline());
   next = earliest(next, pdos_.nextDeadline());
-  next = earliest(next, emcy_.nextDeadline(state_));
+  next = earliest(next, emcy_.nextDeadline(nmt_.state()));
   next = earliest(next, lss_.nextDeadline());
+  next = earliest(next, nmt_.nextDeadline());
+  // Every deadline is one of these: what the services scheduled while they ran is in them.
+  clock_.next = next;
   return next;
-}
-
-void Node::flushTx() noexcept {
-  while (!tx_.empty() && !busOff_ && !lss_.transmissionSuspended()) {
-    const QueuedFrame& queued = tx_.front();
-    if (queued.expiry != kNever && clock_.now > queued.expiry) {
-      tx_.expireFront();
-      continue;
-    }
-    if (!can_.tryTransmit(queued.frame)) {
-      ++statistics_.txRefused;
-      return;
-    }
-    tx_.pop();
-  }
 }
 
 }  // namespace costa

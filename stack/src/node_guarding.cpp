@@ -22,11 +22,12 @@ NodeGuarding::Event NodeGuarding::onRequest(NmtState state, Microseconds now) no
   reply.id = cob::kErrorControlBase + nodeId_;
   reply.dlc = 1;
   reply.data[0] = static_cast<uint8_t>(static_cast<uint8_t>(state) | (toggle_ << 7U));
-  tx_.push(reply);
+  tx_.send(reply);
   toggle_ ^= 1U;
   guarded_ = true;
   const Microseconds life = lifeTime();
   deadline_ = life == 0U ? kNever : now + life;
+  clock_.schedule(deadline_);
   if (expired_) {
     expired_ = false;
     return Event::kResumed;
@@ -48,6 +49,7 @@ AbortCode NodeGuarding::write(od::ObjectDictionary& dictionary, const od::EntryR
   if (written == AbortCode::kNone && guarded_ && !expired_) {
     const Microseconds life = lifeTime();
     deadline_ = life == 0U ? kNever : clock_.now + life;
+    clock_.schedule(deadline_);
   }
   return written;
 }

@@ -156,6 +156,34 @@ StoreResult ParameterStore::save(uint8_t group) noexcept {
   return written;
 }
 
+StoreResult ParameterStore::saveGroups(uint32_t groups) noexcept {
+  StoreResult result = StoreResult::kUnknownGroup;
+  for (uint8_t group = 1; group < 32U; ++group) {
+    if ((groups & (uint32_t{1} << group)) == 0U || !hasGroup(group)) {
+      continue;
+    }
+    result = save(group);
+    if (result != StoreResult::kOk) {
+      return result;
+    }
+  }
+  return result;
+}
+
+StoreResult ParameterStore::invalidateGroups(uint32_t groups) noexcept {
+  StoreResult result = StoreResult::kUnknownGroup;
+  for (uint8_t group = 1; group < 32U; ++group) {
+    if ((groups & (uint32_t{1} << group)) == 0U || !hasGroup(group)) {
+      continue;
+    }
+    result = invalidate(group);
+    if (result != StoreResult::kOk) {
+      return result;
+    }
+  }
+  return result;
+}
+
 StoreResult ParameterStore::invalidate(uint8_t group) noexcept {
   const Region* region = nullptr;
   const StoreResult found = findRegion(group, &region);

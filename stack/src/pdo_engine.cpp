@@ -1,5 +1,6 @@
 #include "costa/pdo_engine.hpp"
 
+#include "costa/frame_router.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa {
@@ -65,24 +66,20 @@ void PdoEngine::stop() noexcept {
   }
 }
 
-bool PdoEngine::onFrame(const CanFrame& frame, Microseconds now) noexcept {
-  if (!running_) {
+bool PdoEngine::receive(size_t channel, const CanFrame& frame, Microseconds now) noexcept {
+  if (!running_ || !rpdos_[channel].accepts(frame)) {
     return false;
   }
-  bool used = false;
-  for (size_t i = 0; i < rpdoCount_; ++i) {
-    if (rpdos_[i].accepts(frame)) {
-      rpdos_[i].onFrame(context_, frame, now);
-      used = true;
-    }
+  rpdos_[channel].onFrame(context_, frame, now);
+  return true;
+}
+
+bool PdoEngine::remoteRequest(size_t channel, Microseconds now) noexcept {
+  if (!running_ || !tpdos_[channel].valid()) {
+    return false;
   }
-  for (size_t i = 0; i < tpdoCount_; ++i) {
-    if (tpdos_[i].acceptsRemoteRequest(frame)) {
-      tpdos_[i].onRemoteRequest(context_, now);
-      used = true;
-    }
-  }
-  return used;
+  tpdos_[channel].onRemoteRequest(context_, now);
+  return true;
 }
 
 void PdoEngine::onSync(uint8_t counter, Microseconds now, Microseconds windowEnd) noexcept {
@@ -126,7 +123,7 @@ Microseconds PdoEngine::nextDeadline() const noexcept {
 void PdoEngine::markChanged(uint16_t index, uint8_t subIndex) noexcept {
   for (size_t i = 0; i < tpdoCount_; ++i) {
     if (tpdos_[i].maps(index, subIndex)) {
-      tpdos_[i].signalEvent();
+      tpdos_[i].signalEvent(context_.clock);
     }
   }
 }
@@ -136,7 +133,7 @@ bool PdoEngine::requestTransmission(uint16_t communicationIndex) noexcept {
   if (tpdo == nullptr) {
     return false;
   }
-  tpdo->signalEvent();
+  tpdo->signalEvent(context_.clock);
   return true;
 }
 
@@ -189,6 +186,7 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
       tpdo->start(context_, context_.clock.now, false);
     }
   }
+  context_.routes.invalidate();
   return AbortCode::kNone;
 }
 

@@ -1,6 +1,7 @@
 #include "costa/rpdo_channel.hpp"
 
 #include "costa/emcy_producer.hpp"
+#include "costa/node_clock.hpp"
 #include "costa/node_events.hpp"
 
 namespace costa {
@@ -41,6 +42,7 @@ void RpdoChannel::onFrame(PdoContext& context, const CanFrame& frame, Microsecon
   }
   if (eventTimer_ != 0U) {
     deadline_ = now + eventTimer_;
+    context.clock.schedule(deadline_);
     if (timedOut_) {
       timedOut_ = false;
       context.emcy.clear(kEmcyTimeout, source());
@@ -65,9 +67,8 @@ void RpdoChannel::onSync(PdoContext& context) noexcept {
 
 void RpdoChannel::apply(PdoContext& context, const uint8_t* data) noexcept {
   map_.unpack(context.access, data);
-  if (context.events != nullptr) {
-    context.events->onRpdoReceived(index_);
-  }
+  const uint16_t index = index_;
+  context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoReceived(index); });
 }
 
 void RpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
@@ -75,9 +76,8 @@ void RpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
     timedOut_ = true;
     deadline_ = kNever;
     context.emcy.raise(kEmcyTimeout, source(), kErrorCommunication);
-    if (context.events != nullptr) {
-      context.events->onRpdoTimeout(index_);
-    }
+    const uint16_t index = index_;
+    context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoTimeout(index); });
   }
 }
 

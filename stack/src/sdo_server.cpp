@@ -39,7 +39,7 @@ size_t unspecifiedExpeditedLength(const od::EntryRef& ref, const uint8_t* data) 
 
 }  // namespace
 
-SdoServer::SdoServer(ObjectAccess& access, TxQueue& tx, const SdoProfile& profile,
+SdoServer::SdoServer(ObjectAccess& access, TransmitPath& tx, const SdoProfile& profile,
                      uint8_t* buffer, size_t bufferSize, Microseconds timeout) noexcept
     : access_(access),
       channel_(tx, profile.distinguishHighAndLowValues),

@@ -49,14 +49,9 @@ AbortCode StoreCommands::write(od::ObjectDictionary& dictionary, const od::Entry
   if (groups == 0U || store_ == nullptr || !store_->isLaidOut()) {
     return AbortCode::kCannotStore;
   }
-  for (uint8_t group = 1; group < 32U; ++group) {
-    if ((groups & groupBit(group)) == 0U) {
-      continue;
-    }
-    const StoreResult result = store ? store_->save(group) : store_->invalidate(group);
-    if (result != StoreResult::kOk) {
-      return AbortCode::kCannotStore;
-    }
+  const StoreResult result = store ? store_->saveGroups(groups) : store_->invalidateGroups(groups);
+  if (result != StoreResult::kOk) {
+    return AbortCode::kCannotStore;
   }
   if (!store && ref.subIndex() == 1U && listener_ != nullptr) {
     listener_->onRestoreAll();

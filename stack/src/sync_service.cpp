@@ -2,6 +2,7 @@
 
 #include "costa/cob_ids.hpp"
 #include "costa/emcy_producer.hpp"
+#include "costa/frame_router.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa {
@@ -15,6 +16,8 @@ void SyncService::configure(Microseconds now) noexcept {
   overflow_ = static_cast<uint8_t>(dictionary_.readUnsigned(kOverflowIndex, 0, 0));
   counter_ = 1;
   next_ = producer_ && period_ != 0U ? now + period_ : kNever;
+  clock_.schedule(next_);
+  routes_.invalidate();
 }
 
 bool SyncService::onFrame(const CanFrame& frame, Microseconds now, SyncEvent* event) noexcept {
@@ -50,7 +53,7 @@ bool SyncService::process(Microseconds now, bool allowed, SyncEvent* event) noex
     event->counter = counter_;
     counter_ = counter_ >= overflow_ ? 1U : static_cast<uint8_t>(counter_ + 1U);
   }
-  tx_.push(frame);
+  tx_.send(frame);
   event->time = now;
   event->windowEnd = windowEnd(now);
   return true;

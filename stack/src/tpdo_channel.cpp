@@ -1,5 +1,7 @@
 #include "costa/tpdo_channel.hpp"
 
+#include "costa/node_clock.hpp"
+
 namespace costa {
 
 void TpdoChannel::configure(PdoContext& context) noexcept {
@@ -23,7 +25,6 @@ void TpdoChannel::configure(PdoContext& context) noexcept {
 }
 
 void TpdoChannel::start(PdoContext& context, Microseconds now, bool initialEvent) noexcept {
-  (void)context;
   running_ = true;
   syncCount_ = 0;
   waitingForStart_ = syncStart_ != 0U;
@@ -36,6 +37,7 @@ void TpdoChannel::start(PdoContext& context, Microseconds now, bool initialEvent
     if (eventTimer_ != 0U) {
       eventDeadline_ = now + eventTimer_;
     }
+    context.clock.schedule(nextDeadline());
   }
 }
 
@@ -45,9 +47,10 @@ void TpdoChannel::stop() noexcept {
   eventDeadline_ = kNever;
 }
 
-void TpdoChannel::signalEvent() noexcept {
+void TpdoChannel::signalEvent(NodeClock& clock) noexcept {
   if (running_ && (type_ == 0U || eventDriven())) {
     event_ = true;
+    clock.schedule(nextDeadline());
   }
 }
 
@@ -138,10 +141,11 @@ void TpdoChannel::send(PdoContext& context, const uint8_t* data, Microseconds no
   for (size_t i = 0; i < bytes; ++i) {
     frame.data[i] = data[i];
   }
-  context.tx.push(frame, expiry);
+  context.tx.send(frame, expiry);
   inhibitUntil_ = now + inhibit_;
   if (eventTimer_ != 0U && eventDriven()) {
     eventDeadline_ = now + eventTimer_;
+    context.clock.schedule(eventDeadline_);
   }
 }
 

@@ -11,10 +11,9 @@ constexpr uint8_t kSelfTest = 3;
 
 ExampleDevice::ExampleDevice(Node& node, uint32_t serialNumber) noexcept
     : node_(node), serialNumber_(serialNumber) {
-  node.attachHook(kCommand, kCommand, *this);
-  node.attachHook(kScratchPad, kScratchPad, *this);
-  node.attachHook(kOperatingMode, kOperatingMode, *this);
-  node.setEvents(this);
+  attached_ = node.attachHook(kCommand, kCommand, *this) &&
+              node.attachHook(kScratchPad, kScratchPad, *this) &&
+              node.attachHook(kOperatingMode, kOperatingMode, *this) && node.addListener(*this);
 }
 
 void ExampleDevice::onResetApplication() noexcept {

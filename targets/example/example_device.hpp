@@ -46,6 +46,9 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   void onResetApplication() noexcept override;
   void onResetCommunication() noexcept override;
 
+  /// Every hook and the listener found room in the node (its NodeStatistics count refusals).
+  bool attached() const noexcept { return attached_; }
+
   /// The scratch pad's content (0x2008).
   const uint8_t* scratchPad() const noexcept { return scratchPad_; }
   size_t scratchPadLength() const noexcept { return scratchPadLength_; }
@@ -57,6 +60,7 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   uint8_t scratchPad_[kScratchPadCapacity] = {};
   size_t scratchPadLength_ = 0;
   bool receiving_ = false;  ///< A download has started overwriting the scratch pad.
+  bool attached_ = false;
 };
 
 }  // namespace costa::example

@@ -43,8 +43,8 @@ NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId,
   s.storage = storage;
   s.bitRateControl = bitRateControl;
   s.profile.pdo.tpdoOnEnteringOperational = true;  // E17
-  s.profile.emcy.reportErrorRegister = false;       // E14
-  s.profile.errorControl.nodeGuarding = false;              // E48: heartbeat only
+  s.profile.emcy.reportErrorRegister = false;      // E14
+  s.profile.errorControl.nodeGuarding = false;     // E48: heartbeat only
   s.lss = true;
   s.lssBitRates = kListedBitRates;
   s.storeAllGroups = groupBit(od::kGroupCommunication) | groupBit(od::kGroupApplication);  // E22
@@ -56,9 +56,8 @@ NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId,
 
 GefranDevice::GefranDevice(Node& node, HallSensors& sensors) noexcept
     : node_(node), sensors_(sensors) {
-  node.attachHook(kResolution, kZeroPoint, *this);
-  node.attachHook(kLssParameters, kLssParameters, *this);
-  node.setEvents(this);
+  attached_ = node.attachHook(kResolution, kZeroPoint, *this) &&
+              node.attachHook(kLssParameters, kLssParameters, *this) && node.addListener(*this);
 }
 
 uint32_t GefranDevice::value(uint16_t index, uint8_t sub) const noexcept {

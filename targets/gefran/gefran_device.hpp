@@ -34,6 +34,9 @@ class GefranDevice : public ObjectHook, public NodeEvents {
   /// when 0x5000 = 1. Returns kNever (nothing is timed here).
   Microseconds process(Microseconds now) noexcept;
 
+  /// Every hook and the listener found room in the node (its NodeStatistics count refusals).
+  bool attached() const noexcept { return attached_; }
+
   AbortCode prepareRead(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                         const ReadRequest& request) noexcept override;
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
@@ -52,6 +55,7 @@ class GefranDevice : public ObjectHook, public NodeEvents {
   bool autoStartPending_ = false;
   uint8_t storedFaults_ = 0;    ///< faults found in stored parameters since power-on
   uint8_t reportedFaults_ = 0;  ///< 0x4001 bits whose EMCY condition is raised
+  bool attached_ = false;
 };
 
 }  // namespace costa::gefran

@@ -29,8 +29,7 @@ SoloDevice::SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId,
       errors_(node),
       powerOnNodeId_(powerOnNodeId),
       explicitNodeId_(explicitNodeId) {
-  node.attachHook(kFirstObject, kLastObject, *this);
-  node.setEvents(this);
+  attached_ = node.attachHook(kFirstObject, kLastObject, *this) && node.addListener(*this);
 }
 
 uint32_t SoloDevice::readU32(uint16_t index) const noexcept {

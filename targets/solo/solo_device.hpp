@@ -36,6 +36,9 @@ class SoloDevice : public ObjectHook, public NodeEvents {
     factoryResetContext_ = context;
   }
 
+  /// The hook and the listener found room in the node (its NodeStatistics count refusals).
+  bool attached() const noexcept { return attached_; }
+
   AbortCode prepareRead(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                         const ReadRequest& request) noexcept override;
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
@@ -59,6 +62,7 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   Microseconds identifyAt_ = kNever;
   FactoryResetHandler factoryReset_ = nullptr;
   void* factoryResetContext_ = nullptr;
+  bool attached_ = false;
 };
 
 }  // namespace costa::solo

@@ -65,8 +65,8 @@ class AbsentObjects : public ObjectHook {
 /// Node guarding compiled out: no reply to remote requests, no life time; no 0x100C/0x100D.
 class AbsentNodeGuarding final : public AbsentObjects {
  public:
-  AbsentNodeGuarding(od::ObjectDictionary& dictionary, TxQueue& tx,
-                     const NodeClock& clock) noexcept {
+  AbsentNodeGuarding(od::ObjectDictionary& dictionary, TransmitPath& tx,
+                     NodeClock& clock) noexcept {
     (void)dictionary;
     (void)tx;
     (void)clock;
@@ -117,7 +117,7 @@ class AbsentHeartbeatConsumer final : public AbsentObjects {
 /// LSS compiled out: nothing on 0x7E5 is answered; the node-id and bit timing are the node's.
 class AbsentLssSlave {
  public:
-  AbsentLssSlave(TxQueue& tx, LssSlaveHost& host) noexcept {
+  AbsentLssSlave(TransmitPath& tx, LssSlaveHost& host) noexcept {
     (void)tx;
     (void)host;
   }
@@ -167,6 +167,10 @@ class AbsentParameterStore {
   }
   StoreResult load(uint8_t group) noexcept {
     (void)group;
+    return StoreResult::kNotLaidOut;
+  }
+  StoreResult saveGroups(uint32_t groups) noexcept {
+    (void)groups;
     return StoreResult::kNotLaidOut;
   }
   StoreResult saveRecord(uint8_t recordId, const uint8_t* data, size_t length) noexcept {

@@ -9,7 +9,7 @@
 #include "costa/nmt_state.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/object_hook.hpp"
-#include "costa/tx_queue.hpp"
+#include "costa/transmit_path.hpp"
 
 namespace costa {
 
@@ -47,7 +47,7 @@ class EmcyProducer : public ObjectHook {
   static constexpr uint16_t kCobIdIndex = 0x1014;
   static constexpr uint16_t kInhibitIndex = 0x1015;
 
-  EmcyProducer(od::ObjectDictionary& dictionary, const EmcyProfile& profile,
+  EmcyProducer(od::ObjectDictionary& dictionary, const EmcyProfile& profile, NodeClock& clock,
                EmcyCondition* conditions, size_t conditionCapacity, PendingEmcy* pending,
                size_t pendingCapacity) noexcept;
 
@@ -73,10 +73,13 @@ class EmcyProducer : public ObjectHook {
   uint8_t errorRegister() const noexcept;
   /// EMCY frames that could not be queued (queue full), since construction.
   uint32_t lost() const noexcept { return lost_; }
+  /// Conditions raised while the condition table was full (their EMCY went out, but clearing
+  /// them sends no error reset), since construction.
+  uint32_t conditionsFull() const noexcept { return conditionsFull_; }
 
   /// Sends queued EMCY frames when `state` allows (pre-operational, operational) and the
   /// inhibit time (0x1015) has passed since the previous one.
-  void process(Microseconds now, NmtState state, TxQueue& tx) noexcept;
+  void process(Microseconds now, NmtState state, TransmitPath& tx) noexcept;
   Microseconds nextDeadline(NmtState state) const noexcept;
 
   /// 0x1003 (writing 0 to sub-index 0 clears the history; any other write aborts 0x06090030),
@@ -95,6 +98,7 @@ class EmcyProducer : public ObjectHook {
 
   od::ObjectDictionary& dictionary_;
   const EmcyProfile& profile_;
+  NodeClock& clock_;
   EmcyCondition* conditions_;
   size_t capacity_;
   size_t count_ = 0;
@@ -103,6 +107,7 @@ class EmcyProducer : public ObjectHook {
   size_t pendingHead_ = 0;
   size_t pendingCount_ = 0;
   uint32_t lost_ = 0;
+  uint32_t conditionsFull_ = 0;
   uint8_t nodeId_ = 0;
   Microseconds nextAllowed_ = 0;
 };

@@ -6,7 +6,7 @@
 #include "costa/nmt_state.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/object_hook.hpp"
-#include "costa/tx_queue.hpp"
+#include "costa/transmit_path.hpp"
 
 namespace costa {
 
@@ -14,7 +14,7 @@ class HeartbeatProducer : public ObjectHook {
  public:
   static constexpr uint16_t kIndex = 0x1017;
 
-  HeartbeatProducer(od::ObjectDictionary& dictionary, TxQueue& tx, const NodeClock& clock) noexcept
+  HeartbeatProducer(od::ObjectDictionary& dictionary, TransmitPath& tx, NodeClock& clock) noexcept
       : dictionary_(dictionary), tx_(tx), clock_(clock) {}
 
   void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
@@ -33,8 +33,8 @@ class HeartbeatProducer : public ObjectHook {
 
  private:
   od::ObjectDictionary& dictionary_;
-  TxQueue& tx_;
-  const NodeClock& clock_;
+  TransmitPath& tx_;
+  NodeClock& clock_;
   uint8_t nodeId_ = 0;
   Microseconds period_ = 0;
   Microseconds next_ = kNever;

@@ -9,7 +9,7 @@
 //   lss.process(now);                                // no later than lss.nextDeadline()
 //
 // What only the device knows (supported bit rates, non-volatile storage, the CAN controller,
-// NMT resets) it asks of an LssSlaveHost. Every frame it sends is queued on the TxQueue given
+// NMT resets) it asks of an LssSlaveHost. Every frame it sends goes to the TransmitPath given
 // at construction: COB-ID 0x7E4, DLC 8, bytes it does not use zero.
 #pragma once
 
@@ -19,7 +19,7 @@
 #include "costa/lss_bit_timing.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/time.hpp"
-#include "costa/tx_queue.hpp"
+#include "costa/transmit_path.hpp"
 
 namespace costa {
 
@@ -113,7 +113,7 @@ class LssSlave {
  public:
   /// Until reset() is called the slave is in LSS waiting state with a zero identity and node-id
   /// 0xFF (active and pending).
-  LssSlave(TxQueue& tx, LssSlaveHost& host) noexcept;
+  LssSlave(TransmitPath& tx, LssSlaveHost& host) noexcept;
   LssSlave(const LssSlave&) = delete;
   LssSlave& operator=(const LssSlave&) = delete;
   ~LssSlave() = default;
@@ -217,7 +217,7 @@ class LssSlave {
   void respond(uint8_t cs, uint8_t byte1 = 0) noexcept;
   void respondValue(uint8_t cs, uint32_t value) noexcept;
 
-  TxQueue& tx_;
+  TransmitPath& tx_;
   LssSlaveHost& host_;
   LssIdentity identity_;
   LssState state_ = LssState::kWaiting;

@@ -1,6 +1,7 @@
 // What a device application hears from its node.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "costa/lss_slave.hpp"
@@ -9,8 +10,11 @@
 
 namespace costa {
 
-/// Implemented by a device application and passed to `Node::setEvents()`. Called synchronously
-/// from `Node::start()`, `onFrame()` or `process()`; must not block. Defaults do nothing.
+/// What a listener hears from its node. Implemented by a device application, a profile layer
+/// (CiA 402, say) or anything else that follows the node, and added with
+/// `Node::addListener()`; every listener hears every event, in the order they were added.
+/// Called synchronously from `Node::start()`, `onFrame()`, `process()` or an application call
+/// into the node; must not block. Defaults do nothing.
 class NodeEvents {
  public:
   /// The NMT state changed (also on the way through resets).
@@ -25,7 +29,12 @@ class NodeEvents {
   /// power-on values (the application may adjust them here, e.g. a serial number in 0x1018);
   /// the services start from them and the boot-up frame follows.
   virtual void onResetCommunication() noexcept {}
-  /// An RPDO's data has just been written into the dictionary (at reception or at the SYNC).
+  /// An RPDO's entries are about to be written (at reception, or at the SYNC for a synchronous
+  /// RPDO): every entry has passed its checks. onRpdoReceived() follows once all are written.
+  virtual void onRpdoWriting(uint16_t communicationIndex) noexcept { (void)communicationIndex; }
+  /// An RPDO's data has just been written into the dictionary, all of its entries. An RPDO that
+  /// an entry's hook refuses is not written at all and does not reach this call
+  /// (NodeStatistics::rpdosRefused counts it).
   virtual void onRpdoReceived(uint16_t communicationIndex) noexcept { (void)communicationIndex; }
   /// An RPDO with an event timer (deadline monitoring) did not arrive in time.
   virtual void onRpdoTimeout(uint16_t communicationIndex) noexcept { (void)communicationIndex; }
@@ -61,6 +70,46 @@ class NodeEvents {
   NodeEvents& operator=(const NodeEvents&) = default;
   NodeEvents(NodeEvents&&) = default;
   NodeEvents& operator=(NodeEvents&&) = default;
+};
+
+/// The listeners of a node: a fixed number, no heap. Context: the one that runs the node.
+class NodeListeners {
+ public:
+  static constexpr size_t kCapacity = 4;
+
+  /// Adds `listener` after the others. False (and counted in refused()) when kCapacity
+  /// listeners are there already, or when `listener` is one of them. O(kCapacity).
+  [[nodiscard]] bool add(NodeEvents& listener) noexcept {
+    for (size_t i = 0; i < count_; ++i) {
+      if (listeners_[i] == &listener) {
+        ++refused_;
+        return false;
+      }
+    }
+    if (count_ == kCapacity) {
+      ++refused_;
+      return false;
+    }
+    listeners_[count_++] = &listener;
+    return true;
+  }
+
+  /// Calls `call(listener)` for every listener, in the order they were added. O(listeners).
+  template <typename Call>
+  void notify(Call call) const noexcept {
+    for (size_t i = 0; i < count_; ++i) {
+      call(*listeners_[i]);
+    }
+  }
+
+  size_t size() const noexcept { return count_; }
+  /// Listeners add() turned away, since construction.
+  uint32_t refused() const noexcept { return refused_; }
+
+ private:
+  NodeEvents* listeners_[kCapacity] = {};
+  size_t count_ = 0;
+  uint32_t refused_ = 0;
 };
 
 }  // namespace costa

@@ -7,7 +7,7 @@
 #include "costa/nmt_state.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/object_hook.hpp"
-#include "costa/tx_queue.hpp"
+#include "costa/transmit_path.hpp"
 
 namespace costa {
 
@@ -18,7 +18,7 @@ class NodeGuarding : public ObjectHook {
 
   enum class Event : uint8_t { kNone, kLifeTimeExpired, kResumed };
 
-  NodeGuarding(od::ObjectDictionary& dictionary, TxQueue& tx, const NodeClock& clock) noexcept
+  NodeGuarding(od::ObjectDictionary& dictionary, TransmitPath& tx, NodeClock& clock) noexcept
       : dictionary_(dictionary), tx_(tx), clock_(clock) {}
 
   /// Reset communication: the toggle bit restarts at `toggleStart`; life guarding stops until
@@ -41,8 +41,8 @@ class NodeGuarding : public ObjectHook {
   Microseconds lifeTime() const noexcept;
 
   od::ObjectDictionary& dictionary_;
-  TxQueue& tx_;
-  const NodeClock& clock_;
+  TransmitPath& tx_;
+  NodeClock& clock_;
   uint8_t nodeId_ = 0;
   uint8_t toggle_ = 0;
   bool guarded_ = false;

@@ -75,6 +75,14 @@ class ParameterStore {
   /// the group's values as they were, except when the medium fails or changes during the copy
   /// (kMediumError, kCorrupt): then the group's defaults are restored rather than leave a mix.
   StoreResult load(uint8_t group) noexcept;
+  /// Saves every group of `groups` (bit g for group g, see groupBit()) that the store holds,
+  /// one after the other by ascending number, each on its own: a power loss in the middle
+  /// leaves each group entirely old or entirely new (docs/storage.md, "Save all"). Stops at
+  /// the first failure and returns it; kUnknownGroup when none of the groups is held.
+  StoreResult saveGroups(uint32_t groups) noexcept;
+  /// invalidate() for every group of `groups` the store holds, in the same order and manner.
+  StoreResult invalidateGroups(uint32_t groups) noexcept;
+
   /// Stores a "restore defaults" marker as the newest image: the next load() yields kNoImage
   /// and leaves the defaults (CiA 301 0x1011: takes effect at the next reset). The dictionary
   /// is not changed.

@@ -5,16 +5,17 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "costa/pdo_profile.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/object_access.hpp"
 #include "costa/pdo_map.hpp"
-#include "costa/tx_queue.hpp"
+#include "costa/pdo_profile.hpp"
+#include "costa/transmit_path.hpp"
 
 namespace costa {
 
 class EmcyProducer;
-class NodeEvents;
+class FrameRouter;
+class NodeListeners;
 
 /// A device's fixed mapping for a PDO that has no mapping object in its dictionary.
 struct StaticPdoMapping {
@@ -31,12 +32,13 @@ struct StaticPdoMappings {
 /// Everything a PDO channel needs from its node.
 struct PdoContext {
   ObjectAccess& access;
-  TxQueue& tx;
+  TransmitPath& tx;
   const PdoProfile& profile;
   EmcyProducer& emcy;
-  NodeEvents*& events;
-  const NodeClock& clock;
+  const NodeListeners& listeners;
+  NodeClock& clock;
   StaticPdoMappings staticMappings;
+  FrameRouter& routes;  ///< told when a PDO's CAN-ID or validity changes
 };
 
 /// A decoded PDO COB-ID (sub-index 1 of a communication parameter).

@@ -29,9 +29,11 @@ class PdoEngine : public ObjectHook {
   void start(Microseconds now) noexcept;  ///< entering operational
   void stop() noexcept;                   ///< leaving operational
 
-  /// A frame received while operational: an RPDO, or a remote request for a TPDO. Returns false
-  /// when no PDO uses the frame.
-  bool onFrame(const CanFrame& frame, Microseconds now) noexcept;
+  /// A data frame for RPDO `channel` (the node's routing table found it), operational. False
+  /// when the PDO does not take it (not running, not valid). O(mapped entries).
+  bool receive(size_t channel, const CanFrame& frame, Microseconds now) noexcept;
+  /// A remote request for TPDO `channel`, operational. O(mapped entries).
+  bool remoteRequest(size_t channel, Microseconds now) noexcept;
   /// A SYNC (operational): held RPDO data is applied, then synchronous TPDOs are sent.
   void onSync(uint8_t counter, Microseconds now, Microseconds windowEnd) noexcept;
   void process(Microseconds now) noexcept;
@@ -45,6 +47,12 @@ class PdoEngine : public ObjectHook {
 
   size_t rpdoCount() const noexcept { return rpdoCount_; }
   size_t tpdoCount() const noexcept { return tpdoCount_; }
+  const RpdoChannel& rpdo(size_t channel) const noexcept { return rpdos_[channel]; }
+  const TpdoChannel& tpdo(size_t channel) const noexcept { return tpdos_[channel]; }
+  /// RPDOs not written because an entry was refused, since construction.
+  uint32_t rpdosRefused() const noexcept { return rpdosRefused_; }
+  /// Mappings that could not be resolved at configuration (the PDO then carries nothing).
+  uint32_t unresolvableMappings() const noexcept { return unresolvableMappings_; }
 
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
@@ -66,6 +74,8 @@ class PdoEngine : public ObjectHook {
   size_t tpdoCapacity_;
   size_t tpdoCount_ = 0;
   bool running_ = false;
+  uint32_t rpdosRefused_ = 0;
+  uint32_t unresolvableMappings_ = 0;
 };
 
 }  // namespace costa

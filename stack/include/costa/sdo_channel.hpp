@@ -10,7 +10,7 @@
 #include "costa/od/abort_code.hpp"
 #include "costa/od/little_endian.hpp"
 #include "costa/port/can_frame.hpp"
-#include "costa/tx_queue.hpp"
+#include "costa/transmit_path.hpp"
 
 namespace costa {
 
@@ -18,7 +18,7 @@ class SdoChannel {
  public:
   /// `distinguishHighAndLowValues`: DeviceProfile's choice between 0x06090031/0x06090032 and
   /// 0x06090030 for values out of range.
-  SdoChannel(TxQueue& tx, bool distinguishHighAndLowValues) noexcept
+  SdoChannel(TransmitPath& tx, bool distinguishHighAndLowValues) noexcept
       : tx_(tx), distinguishHighAndLowValues_(distinguishHighAndLowValues) {}
 
   void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
@@ -29,7 +29,7 @@ class SdoChannel {
     frame.id = cob::kSdoTxBase + nodeId_;
     frame.dlc = 8;
     memcpy(frame.data, data, 8);
-    tx_.push(frame);
+    tx_.send(frame);
   }
 
   /// Queues an abort frame (CiA 301 7.2.4.3.17).
@@ -46,10 +46,10 @@ class SdoChannel {
 
   /// Whether a burst may queue another frame. A quarter of the queue stays free for the other
   /// services (heartbeat, emergency), so that a long block upload never crowds them out.
-  bool roomForBurst() const noexcept { return tx_.size() < tx_.capacity() - tx_.capacity() / 4U; }
+  bool roomForBurst() const noexcept { return tx_.roomForBurst(); }
 
  private:
-  TxQueue& tx_;
+  TransmitPath& tx_;
   bool distinguishHighAndLowValues_;
   uint8_t nodeId_ = 0;
 };

@@ -7,17 +7,17 @@
 #include <stdint.h>
 
 #include "costa/compiled_out.hpp"
-#include "costa/sdo_profile.hpp"
 #include "costa/features.hpp"
 #include "costa/object_access.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/sdo_block_download.hpp"
 #include "costa/sdo_block_upload.hpp"
 #include "costa/sdo_channel.hpp"
+#include "costa/sdo_profile.hpp"
 #include "costa/sdo_value_reader.hpp"
 #include "costa/sdo_value_writer.hpp"
 #include "costa/time.hpp"
-#include "costa/tx_queue.hpp"
+#include "costa/transmit_path.hpp"
 
 namespace costa {
 
@@ -26,7 +26,7 @@ class SdoServer {
   /// `buffer` holds a transfer's value; DOMAINs and values larger than the buffer are streamed
   /// through the entry's hook instead (ObjectHook::readStream/writeStream, sdo_streaming.hpp).
   /// `timeout` applies to every wait for the client.
-  SdoServer(ObjectAccess& access, TxQueue& tx, const SdoProfile& profile, uint8_t* buffer,
+  SdoServer(ObjectAccess& access, TransmitPath& tx, const SdoProfile& profile, uint8_t* buffer,
             size_t bufferSize, Microseconds timeout) noexcept;
 
   void setNodeId(uint8_t nodeId) noexcept { channel_.setNodeId(nodeId); }

@@ -8,11 +8,12 @@
 #include "costa/node_clock.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/port/can_frame.hpp"
-#include "costa/tx_queue.hpp"
+#include "costa/transmit_path.hpp"
 
 namespace costa {
 
 class EmcyProducer;
+class FrameRouter;
 
 /// A SYNC seen by the node (received, or produced by itself).
 struct SyncEvent {
@@ -29,9 +30,10 @@ class SyncService : public ObjectHook {
   static constexpr uint16_t kOverflowIndex = 0x1019;
   static constexpr uint16_t kEmcyUnexpectedLength = 0x8240;
 
-  SyncService(od::ObjectDictionary& dictionary, TxQueue& tx, EmcyProducer& emcy,
-              const NodeClock& clock) noexcept
-      : dictionary_(dictionary), tx_(tx), emcy_(emcy), clock_(clock) {}
+  /// `routes` is told when the SYNC CAN-ID changes.
+  SyncService(od::ObjectDictionary& dictionary, TransmitPath& tx, EmcyProducer& emcy,
+              NodeClock& clock, FrameRouter& routes) noexcept
+      : dictionary_(dictionary), tx_(tx), emcy_(emcy), clock_(clock), routes_(routes) {}
 
   /// Reads 0x1005/0x1006/0x1007/0x1019 (after a reset communication, or a write).
   void configure(Microseconds now) noexcept;
@@ -49,6 +51,8 @@ class SyncService : public ObjectHook {
   Microseconds nextDeadline() const noexcept { return producer_ ? next_ : kNever; }
 
   bool producer() const noexcept { return producer_; }
+  /// The SYNC CAN-ID (consumer and producer).
+  uint32_t canId() const noexcept { return canId_; }
 
   /// 0x1005 (29-bit and restricted CAN-IDs refused, cob::isRestrictedCanId; the CAN-ID cannot
   /// change while producing), 0x1019 (0 or 2..240, only while the period is 0); every accepted
@@ -62,9 +66,10 @@ class SyncService : public ObjectHook {
   }
 
   od::ObjectDictionary& dictionary_;
-  TxQueue& tx_;
+  TransmitPath& tx_;
   EmcyProducer& emcy_;
-  const NodeClock& clock_;
+  NodeClock& clock_;
+  FrameRouter& routes_;
   uint32_t canId_ = 0x080;
   bool producer_ = false;
   Microseconds period_ = 0;

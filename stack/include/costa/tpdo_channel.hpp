@@ -40,7 +40,7 @@ class TpdoChannel {
   /// A remote request: answered when the COB-ID allows RTR and the type does (profile).
   void onRemoteRequest(PdoContext& context, Microseconds now) noexcept;
   /// The application changed mapped data (or asks for a transmission): an event.
-  void signalEvent() noexcept;
+  void signalEvent(NodeClock& clock) noexcept;
   bool maps(uint16_t index, uint8_t subIndex) const noexcept {
     return map_.contains(index, subIndex);
   }

@@ -1,4 +1,5 @@
-// Bounded FIFO of frames waiting for the CAN controller.
+// Bounded FIFO of frames waiting for the CAN controller (the part of TransmitPath that holds
+// what the controller refused).
 #pragma once
 
 #include <stddef.h>
@@ -17,7 +18,7 @@ struct QueuedFrame {
 };
 
 /// Ring buffer over caller-owned storage. Push never blocks: when full, the frame is dropped and
-/// counted. O(1) per operation, no allocation.
+/// counted. O(1) per operation (no division), no allocation. Context: the one that runs the node.
 class TxQueue {
  public:
   TxQueue(QueuedFrame* storage, size_t capacity) noexcept : slots_(storage), capacity_(capacity) {}
@@ -28,7 +29,11 @@ class TxQueue {
       ++dropped_;
       return false;
     }
-    QueuedFrame& slot = slots_[(head_ + count_) % capacity_];
+    size_t tail = head_ + count_;
+    if (tail >= capacity_) {
+      tail -= capacity_;
+    }
+    QueuedFrame& slot = slots_[tail];
     slot.frame = frame;
     slot.expiry = expiry;
     ++count_;
@@ -42,7 +47,7 @@ class TxQueue {
 
   void pop() noexcept {
     if (count_ != 0U) {
-      head_ = (head_ + 1U) % capacity_;
+      head_ = head_ + 1U == capacity_ ? 0U : head_ + 1U;
       --count_;
     }
   }
@@ -53,9 +58,12 @@ class TxQueue {
     ++expired_;
   }
 
-  void clear() noexcept {
+  /// Empties the queue; returns how many frames it held.
+  size_t clear() noexcept {
+    const size_t held = count_;
     head_ = 0;
     count_ = 0;
+    return held;
   }
 
   /// Frames refused because the queue was full, since construction.

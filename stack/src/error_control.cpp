@@ -1,0 +1,132 @@
+#include "costa/error_control.hpp"
+
+#include "costa/cob_ids.hpp"
+#include "costa/nmt_state_machine.hpp"
+
+namespace costa {
+
+ErrorControl::ErrorControl(od::ObjectDictionary& dictionary, const ErrorControlProfile& profile,
+                           TransmitPath& tx, EmcyProducer& emcy, NodeClock& clock,
+                           const NodeListeners& listeners, NmtStateMachine& nmt,
+                           HeartbeatMonitor* monitors, size_t monitorCapacity) noexcept
+    : dictionary_(dictionary),
+      profile_(profile),
+      tx_(tx),
+      emcy_(emcy),
+      clock_(clock),
+      listeners_(listeners),
+      nmt_(nmt),
+      guarding_(dictionary, tx, clock),
+      consumer_(dictionary, monitors, monitorCapacity) {}
+
+void ErrorControl::reset(uint8_t nodeId) noexcept {
+  guarding_.reset(nodeId, profile_.guardToggleStart);
+  consumer_.configure(true);
+}
+
+bool ErrorControl::onFrame(const CanFrame& frame, uint8_t nodeId) noexcept {
+  const auto from = static_cast<uint8_t>(frame.id - cob::kErrorControlBase);
+  if (frame.rtr) {
+    if (!features::kNodeGuarding || !profile_.nodeGuarding) {
+      return false;  // a node without node guarding does not answer remote requests
+    }
+    if (from == nodeId &&
+        guarding_.onRequest(nmt_.state(), clock_.now) == NodeGuarding::Event::kResumed) {
+      if (profile_.emcyForErrors) {
+        emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
+      }
+      listeners_.notify([](NodeEvents& listener) { listener.onLifeGuardingResumed(); });
+    }
+    return true;
+  }
+  if constexpr (!features::kHeartbeatConsumer) {
+    return false;  // nobody here listens to heartbeats
+  }
+  if (frame.dlc == 1U && from != nodeId) {
+    onHeartbeatEvent(consumer_.onHeartbeat(from, frame.data[0], clock_.now));
+    clock_.schedule(consumer_.nextDeadline());
+  }
+  return true;
+}
+
+void ErrorControl::process(Microseconds now) noexcept {
+  if (guarding_.process(now) == NodeGuarding::Event::kLifeTimeExpired) {
+    if (profile_.emcyForErrors) {
+      emcy_.raise(kEmcyLifeGuardOrHeartbeat, 0, kErrorCommunication);
+    }
+    listeners_.notify([](NodeEvents& listener) { listener.onLifeGuardingExpired(); });
+    onCommunicationError();
+  }
+  for (;;) {
+    const HeartbeatConsumer::Event event = consumer_.process(now);
+    if (event.kind == HeartbeatConsumer::EventKind::kNone) {
+      break;
+    }
+    onHeartbeatEvent(event);
+  }
+}
+
+void ErrorControl::onHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept {
+  if (event.kind == HeartbeatConsumer::EventKind::kTimeout) {
+    const uint8_t producer[5] = {event.nodeId, 0, 0, 0, 0};
+    if (profile_.emcyForErrors) {
+      emcy_.raise(kEmcyLifeGuardOrHeartbeat, event.entry, kErrorCommunication, producer);
+    }
+    listeners_.notify(
+        [&event](NodeEvents& listener) { listener.onHeartbeatTimeout(event.nodeId); });
+    onCommunicationError();
+  } else if (event.kind == HeartbeatConsumer::EventKind::kResumed) {
+    if (profile_.emcyForErrors) {
+      emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
+    }
+    listeners_.notify(
+        [&event](NodeEvents& listener) { listener.onHeartbeatResumed(event.nodeId); });
+  }
+}
+
+void ErrorControl::onCommunicationError() noexcept {
+  applyErrorBehaviour(static_cast<uint8_t>(dictionary_.readUnsigned(kErrorBehaviourIndex, 1, 0)));
+}
+
+void ErrorControl::applyErrorBehaviour(uint8_t behaviour) noexcept {
+  emcy_.process(clock_.now, nmt_.state(), tx_);
+  const NmtState state = nmt_.state();
+  if (behaviour == kEnterPreOperational && state == NmtState::kOperational) {
+    nmt_.enter(NmtState::kPreOperational);
+  } else if (behaviour == kEnterStopped && state != NmtState::kInitialising) {
+    nmt_.enter(NmtState::kStopped);
+  }
+}
+
+void ErrorControl::onControllerEvent(CanControllerEvent event) noexcept {
+  switch (event) {
+    case CanControllerEvent::kRxOverrun:
+      ++rxOverruns_;
+      emcy_.signal(kEmcyRxOverrun, kErrorCommunication);
+      break;
+    case CanControllerEvent::kErrorPassive:
+      emcy_.raise(kEmcyErrorPassive, 0, kErrorCommunication);
+      break;
+    case CanControllerEvent::kErrorActive: emcy_.clear(kEmcyErrorPassive, 0); break;
+    case CanControllerEvent::kBusOff:
+      if (!busOff_) {
+        busOff_ = true;
+        ++busOffs_;
+        tx_.setGate(TransmitPath::kBusOff, true);
+        listeners_.notify([](NodeEvents& listener) { listener.onBusOff(); });
+        onCommunicationError();
+      }
+      break;
+    case CanControllerEvent::kBusOffRecovered:
+      if (busOff_) {
+        busOff_ = false;
+        tx_.setGate(TransmitPath::kBusOff, false);
+        emcy_.clear(kEmcyErrorPassive, 0);
+        emcy_.signal(kEmcyBusOffRecovered, kErrorCommunication);
+        listeners_.notify([](NodeEvents& listener) { listener.onBusOffRecovered(); });
+      }
+      break;
+  }
+}
+
+}  // namespace costa
