@@ -121,13 +121,8 @@ void GefranDevice::updateErrors() noexcept {
   }
   reportedFaults_ = faults;
   if (added != 0U) {
-    node_.process(node_.now());  // the EMCY leaves before a change to stopped would hold it
-    const uint32_t behaviour = value(kErrorBehaviour, 0);
-    if (behaviour == 0U && node_.state() == NmtState::kOperational) {
-      node_.enterState(NmtState::kPreOperational);
-    } else if (behaviour == 2U) {
-      node_.enterState(NmtState::kStopped);
-    }
+    // 0x4000 as 0x1029 (E29): the EMCY leaves first, then 0 pre-operational, 2 stopped.
+    node_.errorControl().applyErrorBehaviour(static_cast<uint8_t>(value(kErrorBehaviour, 0)));
   }
 }
 
