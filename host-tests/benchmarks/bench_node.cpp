@@ -48,7 +48,7 @@ CanFrame makeFrame(uint32_t id, std::initializer_list<uint8_t> bytes) {
   return frame;
 }
 
-BenchNode::BenchNode() : target_(can_, kNodeId) {
+BenchNode::BenchNode() : target_(can_, DeviceConfig{kNodeId, true, nullptr, nullptr}) {
   target_.start(now_);
   node().process(now_);
   can_.clear();

@@ -9,12 +9,16 @@
 #include "fuzzed_device.hpp"
 
 int main(int argc, char** argv) {
-  const costa::od::Definition* definition =
-      argc == 2 ? costa::fuzz::fuzzedDefinition(argv[1]) : nullptr;
-  if (definition == nullptr) {
-    fprintf(stderr, "usage: costa_fuzz_dictionary DEVICE  (DEVICE: example, solo, gra, grn)\n");
+  const costa::fuzz::FuzzedDeviceInfo* device =
+      argc == 2 ? costa::fuzz::findFuzzedDevice(argv[1]) : nullptr;
+  if (device == nullptr) {
+    std::string names;
+    for (const std::string& name : costa::fuzz::fuzzedDeviceNames()) {
+      names += (names.empty() ? "" : ", ") + name;
+    }
+    fprintf(stderr, "usage: costa_fuzz_dictionary DEVICE  (DEVICE: %s)\n", names.c_str());
     return 2;
   }
-  fputs(costa::fuzz::fuzzDictionary(*definition).c_str(), stdout);
+  fputs(costa::fuzz::fuzzDictionary(*device->definition, device->controlWords).c_str(), stdout);
   return 0;
 }

@@ -4,6 +4,8 @@
 #include <string.h>
 
 #include <initializer_list>
+#include <sstream>
+#include <vector>
 
 #include "costa/lss_protocol.hpp"
 #include "costa/od/entry_ref.hpp"
@@ -17,6 +19,8 @@ constexpr uint8_t kSegmentedDownload = 0x21;  // size indicated
 constexpr uint8_t kBlockUpload = 0xA4;        // with CRC
 constexpr uint8_t kFrameDlc2 = 0x02;
 constexpr uint8_t kFrameDlc8 = 0x08;
+constexpr uint8_t kSimulate = 0x89;
+constexpr uint8_t kLongCommand = 16;
 
 /// Expedited download command with the size indicated, for 1..4 bytes; 0 for other sizes.
 uint8_t expeditedDownload(size_t size) {
@@ -84,9 +88,31 @@ void valueTokens(std::string* out, const od::Definition& definition, const od::E
   }
 }
 
+/// The words of `text`, separated by spaces.
+std::vector<std::string> wordsOf(const std::string& text) {
+  std::vector<std::string> words;
+  std::istringstream stream(text);
+  for (std::string word; stream >> word;) {
+    words.push_back(word);
+  }
+  return words;
+}
+
+/// A word of a simulation command: alone, as a whole command, and starting a longer one.
+void commandTokens(std::string* out, const std::string& word) {
+  const auto* bytes = reinterpret_cast<const uint8_t*>(word.data());
+  token(out, bytes, word.size());
+  std::vector<uint8_t> command = {kSimulate, static_cast<uint8_t>(word.size())};
+  command.insert(command.end(), bytes, bytes + word.size());
+  token(out, command.data(), command.size());
+  command[1] = kLongCommand;
+  command.push_back(' ');
+  token(out, command.data(), command.size());
+}
+
 }  // namespace
 
-std::string fuzzDictionary(const od::Definition& definition) {
+std::string fuzzDictionary(const od::Definition& definition, const std::string& controlWords) {
   std::string out = "# Costa fuzz dictionary for " + std::string(definition.deviceName) + "\n";
   for (const od::EntryRef& entry : od::Entries(definition)) {
     const auto low = static_cast<uint8_t>(entry.index());
@@ -116,6 +142,11 @@ std::string fuzzDictionary(const od::Definition& definition) {
   }
   token(&out, {0x73, 0x61, 0x76, 0x65});  // "save"
   token(&out, {0x6C, 0x6F, 0x61, 0x64});  // "load"
+  for (const std::string& word : wordsOf(controlWords)) {
+    if (word.size() < kLongCommand) {
+      commandTokens(&out, word);
+    }
+  }
   return out;
 }
 

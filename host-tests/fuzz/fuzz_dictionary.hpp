@@ -16,7 +16,10 @@ namespace costa::fuzz {
 ///    default, its limits, and for 32-bit entries the default with bit 31 or bit 30 set;
 ///  * the NMT commands to all nodes, SYNC without and with a counter;
 ///  * the LSS requests (on 0x7E5) by command specifier;
-///  * the store and restore signatures "save" and "load".
-std::string fuzzDictionary(const od::Definition& definition);
+///  * the store and restore signatures "save" and "load";
+///  * for every word of the device's simulation commands (`controlWords`, space-separated):
+///    the word, the command of the word alone (event 0x89), and the start of a 16-byte command
+///    with the word.
+std::string fuzzDictionary(const od::Definition& definition, const std::string& controlWords);
 
 }  // namespace costa::fuzz

@@ -21,13 +21,10 @@ constexpr uint8_t kFirstControllerEvent = 0x82;
 constexpr uint8_t kLastControllerEvent = 0x86;
 constexpr uint8_t kPowerCycle = 0x87;
 constexpr uint8_t kStorageCut = 0x88;
-constexpr uint8_t kHallReadings = 0x89;
-constexpr uint8_t kHallFaults = 0x8A;
+constexpr uint8_t kSimulate = 0x89;
 constexpr uint8_t kEntryUpload = 0x8B;
 constexpr uint8_t kEntryDownload = 0x8C;
 constexpr uint8_t kFirstOwnSdo = 0xC0;
-constexpr uint8_t kHallFaultBits = 0x83;  // chip 1, chip 2, magnetic field
-constexpr uint16_t kHallCounts = 16384;
 
 uint32_t littleEndian(const uint8_t* bytes, size_t count) {
   uint32_t value = 0;
@@ -140,20 +137,12 @@ bool EventReader::next(Event* event) noexcept {
       event->kind = EventKind::kStoragePowerCut;
       event->bytes = littleEndian(payload, 2);
       return true;
-    case kHallReadings:
-      if (!take(4, &payload)) {
+    case kSimulate:
+      if (!take(1, &payload) || !take(payload[0], &event->text)) {
         return false;
       }
-      event->kind = EventKind::kHallReadings;
-      event->readings[0] = static_cast<uint16_t>(littleEndian(payload, 2) % kHallCounts);
-      event->readings[1] = static_cast<uint16_t>(littleEndian(payload + 2, 2) % kHallCounts);
-      return true;
-    case kHallFaults:
-      if (!take(1, &payload)) {
-        return false;
-      }
-      event->kind = EventKind::kHallFaults;
-      event->code = static_cast<uint8_t>(payload[0] & kHallFaultBits);
+      event->kind = EventKind::kSimulate;
+      event->textLength = payload[0];
       return true;
     case kEntryUpload:
       if (!take(1, &payload)) {

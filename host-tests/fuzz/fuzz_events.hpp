@@ -1,5 +1,5 @@
 // The fuzz input encoding: a header byte, then a sequence of events (frames from the bus, time
-// passing, CAN controller conditions, power cycles, storage power loss, sensor inputs).
+// passing, CAN controller conditions, power cycles, storage power loss, simulation commands).
 // docs/fuzzing.md has the same table with examples.
 //
 // Header (byte 0; an empty input powers the device on and stops):
@@ -24,9 +24,9 @@
 //   0x87       power cycle: the device restarts over the same non-volatile storage
 //   0x88       the storage loses power after N more bytes are programmed or erased; the
 //              device then restarts at the end of the event (a power cut)  N (2 bytes)
-//   0x89       hall chip readings (GRA/GRN; ignored elsewhere)  chip 1, chip 2 (2 bytes each,
-//              modulo 16384)
-//   0x8A       hall chip faults (GRA/GRN): the bits of 0x83 in the byte  (1 byte)
+//   0x89       a simulation command: the device's control() (targets/device_control.hpp), as a
+//              transcript's `sim` line; refused ones change nothing   N (1 byte), N text bytes
+//   0x8A       nothing (skipped)
 //   0x8B       SDO upload of dictionary entry K (entries in dictionary order, K modulo their
 //              number) from the node's own server                  K (1 byte)
 //   0x8C       SDO expedited download of entry K with the size of its value (4 bytes for
@@ -63,8 +63,7 @@ enum class EventKind : uint8_t {
   kControllerEvent,  ///< `code`: 0..4 = CanControllerEvent in declaration order
   kPowerCycle,
   kStoragePowerCut,  ///< after `bytes` bytes
-  kHallReadings,     ///< `readings`
-  kHallFaults,       ///< `code`
+  kSimulate,         ///< the command `text` (`textLength` bytes, not NUL-terminated)
   kEntryUpload,      ///< of entry `code`
   kEntryDownload,    ///< of `frame.data[0..3]` to entry `code`
   kNothing,
@@ -75,7 +74,8 @@ struct Event {
   CanFrame frame;
   Microseconds duration = 0;
   size_t bytes = 0;
-  uint16_t readings[2] = {};
+  const uint8_t* text = nullptr;  ///< inside the input
+  size_t textLength = 0;
   uint8_t code = 0;
 };
 

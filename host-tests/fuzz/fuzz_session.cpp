@@ -1,6 +1,7 @@
 #include "fuzz_session.hpp"
 
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include <memory>
@@ -25,6 +26,28 @@ constexpr uint64_t kProcessCallBudget = 100000;
 /// Recorded frames are checked early when this many wait (a long wait with a fast heartbeat).
 constexpr size_t kFramesBeforeCheck = port::RecordingCan::kCapacity / 2U;
 
+/// The command of a kSimulate event, up to its first NUL (control() takes a C string).
+std::string commandOf(const Event& event) {
+  const std::string text(reinterpret_cast<const char*>(event.text), event.textLength);
+  return text.substr(0, text.find('\0'));
+}
+
+/// `text` with every byte outside printable ASCII as \xNN (for traces).
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20U && byte < 0x7FU && byte != '\\') {
+      out += c;
+    } else {
+      char escaped[8];
+      snprintf(escaped, sizeof(escaped), "\\x%02X", static_cast<unsigned>(byte));
+      out += escaped;
+    }
+  }
+  return out;
+}
+
 std::string describe(const Event& event) {
   switch (event.kind) {
     case EventKind::kFrame: return "rx " + describeFrame(event.frame);
@@ -38,10 +61,7 @@ std::string describe(const Event& event) {
     case EventKind::kPowerCycle: return "power cycle";
     case EventKind::kStoragePowerCut:
       return "storage power cut after " + std::to_string(event.bytes) + " bytes";
-    case EventKind::kHallReadings:
-      return "hall readings " + std::to_string(event.readings[0]) + " " +
-             std::to_string(event.readings[1]);
-    case EventKind::kHallFaults: return "hall faults " + std::to_string(event.code);
+    case EventKind::kSimulate: return "sim " + printable(commandOf(event));
     case EventKind::kEntryUpload: return "upload of entry " + std::to_string(event.code);
     case EventKind::kEntryDownload: return "download to entry " + std::to_string(event.code);
     case EventKind::kNothing: break;
@@ -140,10 +160,13 @@ class Session {
         return runProcess();
       case EventKind::kPowerCycle: return powerOn();
       case EventKind::kStoragePowerCut: device_->storage().cutPowerAfter(event.bytes); return "";
-      case EventKind::kHallReadings:
-        device_->setHallReadings(event.readings[0], event.readings[1]);
+      case EventKind::kSimulate: {
+        const std::string refused = device_->control(commandOf(event).c_str());
+        if (trace_ != nullptr && !refused.empty()) {
+          *trace_ += "  = refused: " + refused + "\n";
+        }
         return runProcess();
-      case EventKind::kHallFaults: device_->setHallFaults(event.code); return runProcess();
+      }
       case EventKind::kEntryUpload:
       case EventKind::kEntryDownload: return sdoToEntry(event);
       case EventKind::kNothing: break;

@@ -1,5 +1,5 @@
-// libFuzzer entry point for one device (COSTA_FUZZ_DEVICE, set by the build: example, solo,
-// gra or grn). A violated invariant is printed and ends the run with a trap, which libFuzzer
+// libFuzzer entry point for one device (COSTA_FUZZ_DEVICE, set by the build: a name of the
+// device list). A violated invariant is printed and ends the run with a trap, which libFuzzer
 // reports as a crash and saves the input (tools/fuzz).
 #include <stddef.h>
 #include <stdint.h>

@@ -4,22 +4,21 @@ encoding (host-tests/fuzz/fuzz_events.hpp, docs/fuzzing.md), plus a few hand-wri
 device for what no transcript does (power cycles over stored parameters, a storage power cut,
 the CAN controller refusing frames, LSS from no node-id).
 
-    make_seeds.py TRANSCRIPT_DIR OUTPUT_DIR
+    make_seeds.py --devices DEVICE,... TRANSCRIPT_DIR OUTPUT_DIR
 
-OUTPUT_DIR/<device>/<transcript name>.bin for the device each transcript names, and
-OUTPUT_DIR/<device>/synthetic-*.bin. A transcript's `rx` frames become frame events, `wait`
-becomes wait events, `sim` commands hall chip events; `tx`, `silence` and `ignore` say what the
-device must send, which the fuzzer does not check (the transcript tests do), so they are left out.
-The header is the transcript's node-id, given explicitly, as the in-process transcript tests do.
+--devices is the device list (targets/devices.cmake). OUTPUT_DIR/<device>/<transcript
+name>.bin for the device each transcript names, and OUTPUT_DIR/<device>/synthetic-*.bin for
+every device. A transcript's `rx` frames become frame events, `wait` becomes wait events, `sim`
+commands simulation command events (0x89, the command's text); `tx`, `silence` and `ignore` say
+what the device must send, which the fuzzer does not check (the transcript tests do), so they
+are left out. The header is the transcript's node-id, given explicitly, as the in-process
+transcript tests do.
 """
 
-import math
+import argparse
 import pathlib
 import shutil
-import struct
 import sys
-
-DEVICES = ("example", "solo", "gra", "grn")
 
 WAIT_MILLISECONDS = 0x41
 FIRST_SHORT_WAIT = 0x44  # 0x45..0x7F: 1..59 ms
@@ -30,11 +29,11 @@ BUS_OFF = 0x85
 BUS_OFF_RECOVERED = 0x86
 POWER_CYCLE = 0x87
 STORAGE_POWER_CUT = 0x88
-HALL_READINGS = 0x89
-HALL_FAULTS = 0x8A
+ENTRY_DOWNLOAD = 0x8C
+SIMULATE = 0x89
+LONGEST_COMMAND = 0xFF
 OWN_SDO_REQUEST = 0xC0
 WAIT_FOR_DEADLINE = 0x43
-HALL_FAULT_BITS = {"chip1": 0x01, "chip2": 0x02, "magnet": 0x80}
 
 
 class SeedError(Exception):
@@ -62,12 +61,12 @@ def sdo(data):
     return bytes([OWN_SDO_REQUEST]) + bytes(data)
 
 
-def raw_from_degrees(degrees):
-    turns = degrees / 360.0
-    turns -= math.trunc(turns)
-    if turns < 0:
-        turns += 1.0
-    return int(turns * 16384 + 0.5) % 16384
+def simulate(command, where):
+    """A simulation command event: its length, then its text."""
+    text = command.encode()
+    if not text or len(text) > LONGEST_COMMAND:
+        raise SeedError(f"{where}: a sim command of 1..{LONGEST_COMMAND} bytes")
+    return bytes([SIMULATE, len(text)]) + text
 
 
 def parse_frame(words, where):
@@ -84,12 +83,11 @@ def parse_frame(words, where):
     return frame_event(can_id, dlc, data, extended=extended)
 
 
-def convert(path):
+def convert(path, devices):
     """Returns (device, seed bytes) of one transcript."""
     device = None
     node_id = 1
     events = b""
-    faults = 0
     for number, line in enumerate(path.read_text().splitlines(), 1):
         words = line.split("#", 1)[0].split()
         if not words:
@@ -105,22 +103,11 @@ def convert(path):
         elif keyword == "wait":
             events += wait_event(int(rest[0]))
         elif keyword == "sim":
-            if rest[0] == "raw":
-                chips = [int(rest[1]), int(rest[2])]
-            elif rest[0] == "angle":
-                chips = [raw_from_degrees(float(rest[1]))] * 2
-            elif rest[0] == "fault":
-                bit = HALL_FAULT_BITS[rest[1]]
-                faults = faults | bit if rest[2] == "on" else faults & ~bit
-                events += bytes([HALL_FAULTS, faults])
-                continue
-            else:
-                raise SeedError(f"{where}: unknown sim command '{rest[0]}'")
-            events += bytes([HALL_READINGS]) + struct.pack("<HH", *chips)
+            events += simulate(" ".join(rest), where)
         elif keyword not in ("tx", "silence", "ignore"):
             raise SeedError(f"{where}: unknown keyword '{keyword}'")
-    if device not in DEVICES:
-        raise SeedError(f"{path}: device '{device}' is not fuzzed")
+    if device not in devices:
+        raise SeedError(f"{path}: device '{device}' is not in the device list")
     return device, bytes([node_id]) + events
 
 
@@ -134,9 +121,13 @@ LSS_STORE = frame_event(0x7E5, 8, [0x17, 0, 0, 0, 0, 0, 0, 0])
 LSS_WAITING = frame_event(0x7E5, 8, [0x04, 0x00, 0, 0, 0, 0, 0, 0])
 
 
-def synthetic(device):
-    """Hand-written inputs: header 0 (the device's own node-id) unless said otherwise."""
-    seeds = {
+def synthetic():
+    """Hand-written inputs, the same for every device: header 0 (the device's own node-id)
+    unless said otherwise."""
+    # Writes of 5 to entries across the dictionary (0x8C), then a power cycle: what a device that
+    # keeps parameters as they are written (NodeSettings::saveParametersOnWrite) loads again.
+    writes = b"".join(bytes([ENTRY_DOWNLOAD, entry, 5, 0, 0, 0]) for entry in range(10, 250, 30))
+    return {
         "power-on": bytes([0]),
         # Parameters saved, then loaded after a power cycle, then "restore defaults".
         "store-power-cycle": bytes([0]) + HEARTBEAT_100MS + SAVE_ALL + bytes([POWER_CYCLE])
@@ -148,31 +139,29 @@ def synthetic(device):
         "controller": bytes([0]) + bytes([REFUSE_FRAMES]) + HEARTBEAT_100MS + NMT_START_ALL
         + wait_event(350) + bytes([ACCEPT_FRAMES, BUS_OFF]) + wait_event(120)
         + bytes([BUS_OFF_RECOVERED]) + wait_event(120),
+        # No node-id at power-on: LSS gives it one and stores it; a power cycle keeps it. (A
+        # device without LSS starts with a node-id of its own.)
+        "lss-unconfigured": bytes([0xFF, WAIT_FOR_DEADLINE]) + LSS_CONFIGURATION + LSS_NODE_ID_5
+        + LSS_STORE + LSS_WAITING + bytes([POWER_CYCLE]) + wait_event(10),
+        "writes-power-cycle": bytes([0]) + writes + bytes([POWER_CYCLE]) + wait_event(20),
     }
-    if device != "solo":
-        # No node-id at power-on: LSS gives it one and stores it; a power cycle keeps it.
-        seeds["lss-unconfigured"] = (bytes([0xFF, WAIT_FOR_DEADLINE]) + LSS_CONFIGURATION
-                                     + LSS_NODE_ID_5 + LSS_STORE + LSS_WAITING
-                                     + bytes([POWER_CYCLE]) + wait_event(10))
-    if device == "solo":
-        # The device address 0x3001 is kept as soon as it is written (no store command).
-        seeds["device-address"] = (bytes([0]) + sdo([0x23, 0x01, 0x30, 0x00, 5, 0, 0, 0])
-                                   + bytes([POWER_CYCLE]) + wait_event(20))
-    return seeds
 
 
 def main(argv):
-    if len(argv) != 3:
-        print("usage: make_seeds.py TRANSCRIPT_DIR OUTPUT_DIR", file=sys.stderr)
-        return 2
-    transcripts = pathlib.Path(argv[1])
-    output = pathlib.Path(argv[2])
-    counts = {device: 0 for device in DEVICES}
-    for device in DEVICES:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--devices", required=True, help="the device list, comma-separated")
+    parser.add_argument("transcripts", type=pathlib.Path, help="the transcript directory")
+    parser.add_argument("output", type=pathlib.Path, help="the seed directory")
+    options = parser.parse_args(argv[1:])
+    devices = [device for device in options.devices.split(",") if device]
+    transcripts = options.transcripts
+    output = options.output
+    counts = {device: 0 for device in devices}
+    for device in devices:
         shutil.rmtree(output / device, ignore_errors=True)  # no seed of a removed transcript
     try:
         for path in sorted(transcripts.rglob("*.transcript")):
-            device, seed = convert(path)
+            device, seed = convert(path, devices)
             target = output / device / (path.stem + ".bin")
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_bytes(seed)
@@ -180,8 +169,8 @@ def main(argv):
     except (SeedError, ValueError, IndexError, KeyError) as error:
         print(f"make_seeds.py: {error}", file=sys.stderr)
         return 1
-    for device in DEVICES:
-        for name, seed in synthetic(device).items():
+    for device in devices:
+        for name, seed in synthetic().items():
             target = output / device / f"synthetic-{name}.bin"
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_bytes(seed)

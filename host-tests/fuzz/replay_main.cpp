@@ -1,11 +1,12 @@
 // Replays fuzz inputs through the same checks as the fuzzer, without libFuzzer:
 //
 //   costa_fuzz_replay [--trace] DEVICE PATH...
+//   costa_fuzz_replay --list-devices
 //
 // PATH is a file or a directory (all files below it, sorted). Prints each violation with its
 // file; exits 1 when any input violates an invariant, when a path does not exist, or when no
 // input was found at all; 2 on a bad command line. --trace prints every event and every
-// transmitted frame of each input.
+// transmitted frame of each input. --list-devices prints the devices it knows, one a line.
 #include <stdio.h>
 
 #include <algorithm>
@@ -45,13 +46,22 @@ bool collect(const fs::path& path, std::vector<fs::path>* files) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string>& devices = costa::fuzz::fuzzedDeviceNames();
+  const std::vector<std::string> devices = costa::fuzz::fuzzedDeviceNames();
+  if (argc == 2 && std::string(argv[1]) == "--list-devices") {
+    for (const std::string& device : devices) {
+      printf("%s\n", device.c_str());
+    }
+    return 0;
+  }
   const bool tracing = argc > 1 && std::string(argv[1]) == "--trace";
   const int first = tracing ? 2 : 1;
   if (argc < first + 2 || std::find(devices.begin(), devices.end(), argv[first]) == devices.end()) {
-    fprintf(stderr,
-            "usage: costa_fuzz_replay [--trace] DEVICE PATH...  (DEVICE: example, solo, gra, "
-            "grn)\n");
+    std::string names;
+    for (const std::string& device : devices) {
+      names += (names.empty() ? "" : ", ") + device;
+    }
+    fprintf(stderr, "usage: costa_fuzz_replay [--trace] DEVICE PATH...  (DEVICE: %s)\n",
+            names.c_str());
     return 2;
   }
   const std::string device = argv[first];

@@ -1,6 +1,8 @@
-// The device under replay, as the replayer drives it: a device composition (a class with
-// start/onFrame/process/node, as firmware and costa-slave run it) behind one interface.
+// The device under replay, as the replayer drives it: a device composition (targets/devices.hpp,
+// as firmware and costa-slave run it) behind one interface.
 #pragma once
+
+#include <stddef.h>
 
 #include "costa/port/can_frame.hpp"
 #include "costa/time.hpp"
@@ -20,8 +22,8 @@ class ReplayDevice {
     (void)now;
     return kNever;
   }
-  /// A `sim` command. True when done; otherwise false with one line saying why not in `why`
-  /// (costa-slave's DeviceTarget::control messages).
+  /// A `sim` command: the composition's control(). True when done; otherwise false with one
+  /// line saying why not in `why`.
   virtual bool control(const char* command, Text& why) noexcept {
     (void)command;
     why.append("this device has no simulation commands");
@@ -37,7 +39,7 @@ class ReplayDevice {
 
 /// A composition as a ReplayDevice; constructed with the composition's own arguments.
 template <typename Composition>
-class ReplayedComposition : public ReplayDevice {
+class ReplayedComposition final : public ReplayDevice {
  public:
   template <typename... Args>
   explicit ReplayedComposition(Args&... args) noexcept : composition_(args...) {}
@@ -47,6 +49,14 @@ class ReplayedComposition : public ReplayDevice {
     composition_.onFrame(frame, now);
   }
   Microseconds process(Microseconds now) noexcept override { return composition_.process(now); }
+  bool control(const char* command, Text& why) noexcept override {
+    char reason[96] = {};
+    if (composition_.control(command, reason, sizeof(reason))) {
+      return true;
+    }
+    why.append(reason);
+    return false;
+  }
 
   Composition& composition() noexcept { return composition_; }
 

@@ -1,13 +1,17 @@
 // A firmware replay image: one suite of compiled transcripts replayed on the Cortex-M core,
 // the report written through semihosting, the result as the program's exit status. Run under
 // qemu-system-arm -M mps2-an386 (tools/firmware-replay).
+#include "replay_script.hpp"
 #include "semihosting.hpp"
 #include "suite_report.hpp"
-#include "suites.hpp"
 
 #ifndef COSTA_REPLAY_SUITE
 #error "COSTA_REPLAY_SUITE names the suite this image replays (see CMakeLists.txt)"
 #endif
+
+namespace costa::replay {
+extern const Suite COSTA_REPLAY_SUITE;
+}  // namespace costa::replay
 
 namespace {
 

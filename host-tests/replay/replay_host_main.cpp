@@ -1,9 +1,9 @@
 // costa-replay [SUITE...]: the transcript replayer on the host. Replays the compiled transcripts
-// of each suite (all when none is named: example, solo, gefran) and prints the same report as
-// the firmware replay images. Exit status 0 when every transcript passed, 1 when one did not,
-// 2 for an unknown suite.
+// of each suite (all when none is named: every directory of host-tests/transcripts) and prints
+// the same report as the firmware replay images. Exit status 0 when every transcript passed, 1
+// when one did not, 2 for an unknown suite.
 #include <cstdio>
-#include <cstring>
+#include <string>
 
 #include "suite_report.hpp"
 #include "suites.hpp"
@@ -15,26 +15,22 @@ class StandardOutput final : public costa::replay::ReportOutput {
   void write(const char* text) noexcept override { std::fputs(text, stdout); }
 };
 
-const costa::replay::Suite* const kSuites[] = {
-    &costa::replay::kExampleSuite, &costa::replay::kSoloSuite, &costa::replay::kGefranSuite};
-
-const costa::replay::Suite* findSuite(const char* name) {
-  for (const costa::replay::Suite* suite : kSuites) {
-    if (std::strcmp(suite->name, name) == 0) {
-      return suite;
-    }
+std::string suiteNames() {
+  std::string names;
+  for (size_t i = 0; i < costa::replay::kSuiteCount; ++i) {
+    names += (names.empty() ? "" : ", ") + std::string(costa::replay::kSuites[i]->name);
   }
-  return nullptr;
+  return names;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
-    if (findSuite(argv[i]) == nullptr) {
+    if (costa::replay::findSuite(argv[i]) == nullptr) {
       std::fprintf(stderr,
                    "costa-replay: unknown suite '%s'\nusage: costa-replay [SUITE...]  (%s)\n",
-                   argv[i], "example, solo, gefran");
+                   argv[i], suiteNames().c_str());
       return 2;
     }
   }
@@ -45,11 +41,11 @@ int main(int argc, char** argv) {
     passed = passed && result.failed == 0U && result.passed > 0U;
   };
   for (int i = 1; i < argc; ++i) {
-    replay(*findSuite(argv[i]));
+    replay(*costa::replay::findSuite(argv[i]));
   }
   if (argc < 2) {
-    for (const costa::replay::Suite* suite : kSuites) {
-      replay(*suite);
+    for (size_t i = 0; i < costa::replay::kSuiteCount; ++i) {
+      replay(*costa::replay::kSuites[i]);
     }
   }
   std::fflush(stdout);

@@ -10,9 +10,6 @@
 
 namespace costa::replay {
 
-/// The device of a transcript's `device` line.
-enum class DeviceKind : uint8_t { kExample, kSolo, kGra, kGrn };
-
 enum class StepKind : uint8_t {
   kReceive,   ///< rx: a client frame to the slave
   kTransmit,  ///< tx: the slave must send this frame next
@@ -31,8 +28,8 @@ struct Step {
 };
 
 struct Script {
-  const char* name;  ///< path below host-tests/transcripts, e.g. "example/sdo-aborts.transcript"
-  DeviceKind device;
+  const char* name;    ///< path below host-tests/transcripts, e.g. "example/sdo-aborts.transcript"
+  const char* device;  ///< the `device` line: a name of the device list (targets/devices.hpp)
   uint8_t nodeId;
   const Step* steps;
   size_t stepCount;
@@ -46,13 +43,5 @@ struct Suite {
   const Script* scripts;
   size_t scriptCount;
 };
-
-/// The device's name as a transcript's `device` line writes it.
-constexpr const char* deviceName(DeviceKind device) noexcept {
-  return device == DeviceKind::kExample ? "example"
-         : device == DeviceKind::kSolo  ? "solo"
-         : device == DeviceKind::kGra   ? "gra"
-                                        : "grn";
-}
 
 }  // namespace costa::replay

@@ -37,7 +37,7 @@ SuiteResult replaySuite(const Suite& suite, ReportOutput& output) noexcept {
     const Script& script = suite.scripts[i];
     FixedText<128> heading;
     heading.append("transcript ").append(script.name).append(" (device ");
-    heading.append(deviceName(script.device)).append(", node-id ");
+    heading.append(script.device).append(", node-id ");
     heading.appendDecimal(script.nodeId).append(")\n");
     output.write(heading.c_str());
     FixedText<320> verdict;

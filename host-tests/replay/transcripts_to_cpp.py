@@ -2,12 +2,13 @@
 """Compiles transcripts into C++ tables for the transcript replayer (replay_script.hpp).
 
     transcripts_to_cpp.py --suite NAME --symbol kNameSuite --root DIR --output FILE.cpp
-                          TRANSCRIPT...
+                          --devices DEVICE,... TRANSCRIPT...
 
 Every transcript is parsed with exactly the rules of host-tests/support/transcript.cpp (the
 parser the in-process and SocketCAN layers use): the same keywords, the same number syntax (as
 C++ stream extraction reads it) and the same error messages. A transcript that does not parse,
-or names a device the replayer cannot build, stops the build with "error: PATH:LINE: MESSAGE".
+or names a device that is not in --devices (the device list, targets/devices.cmake), stops the
+build with "error: PATH:LINE: MESSAGE".
 The tables list the transcripts sorted by their path below --root, which is also their name in
 the replay report.
 """
@@ -18,13 +19,6 @@ import sys
 
 # The characters std::isspace accepts in the "C" locale; bytes.split() splits on the same.
 SPACE = b" \t\n\v\f\r"
-
-DEVICES = {
-    "example": "DeviceKind::kExample",
-    "solo": "DeviceKind::kSolo",
-    "gra": "DeviceKind::kGra",
-    "grn": "DeviceKind::kGrn",
-}
 
 STEP_KINDS = {
     "rx": "StepKind::kReceive",
@@ -116,8 +110,9 @@ def parse_frame(rest):
     return (can_id, extended, rtr, dlc, data, wildcards)
 
 
-def parse_transcript(content, path):
-    """transcript.cpp parseTranscript: a dict with device, node_id, steps and ignored."""
+def parse_transcript(content, path, devices):
+    """transcript.cpp parseTranscript: a dict with device, node_id, steps and ignored; the
+    device must be one of `devices`."""
     transcript = {"device": b"", "node_id": 1, "steps": [], "ignored": []}
     for number, raw in enumerate(content.split(b"\n"), start=1):
         line = raw.split(b"#", 1)[0]
@@ -173,9 +168,9 @@ def parse_transcript(content, path):
     if not transcript["device"]:
         raise TranscriptError("%s: no 'device' line" % path)
     device = text(transcript["device"])
-    if device not in DEVICES:
+    if device not in devices:
         raise TranscriptError("%s: device '%s' cannot be replayed (%s)"
-                              % (path, device, ", ".join(DEVICES)))
+                              % (path, device, ", ".join(devices)))
     transcript["device"] = device
     return transcript
 
@@ -233,7 +228,8 @@ def generate(suite, symbol, scripts):
                 ignored, ", ".join("0x%X" % can_id for can_id in transcript["ignored"])))
         lines.append("")
         rows.append("    {%s, %s, %d, %s, %d, %s, %d}," % (
-            cpp_string(name.encode()), DEVICES[transcript["device"]], transcript["node_id"],
+            cpp_string(name.encode()), cpp_string(transcript["device"].encode()),
+            transcript["node_id"],
             steps, len(transcript["steps"]), ignored, len(transcript["ignored"])))
     if rows:
         lines.append("constexpr Script kScripts[] = {")
@@ -261,15 +257,18 @@ def main(argv):
     parser.add_argument("--symbol", required=True, help="C++ name of the Suite constant")
     parser.add_argument("--root", required=True, help="directory the script names are below")
     parser.add_argument("--output", required=True, help="the C++ file to write")
+    parser.add_argument("--devices", required=True,
+                        help="the devices a transcript may name, comma-separated")
     parser.add_argument("transcripts", nargs="*")
     options = parser.parse_args(argv)
+    devices = [device for device in options.devices.split(",") if device]
     scripts = []
     try:
         for path in options.transcripts:
             with open(path, "rb") as file:
                 content = file.read()
             name = os.path.relpath(path, options.root).replace(os.sep, "/")
-            scripts.append((name, parse_transcript(content, path)))
+            scripts.append((name, parse_transcript(content, path, devices)))
     except (TranscriptError, OSError) as error:
         print("error: %s" % error, file=sys.stderr)
         return 1

@@ -9,8 +9,7 @@
 #include "allocation_guard.hpp"
 #include "costa/od/little_endian.hpp"
 #include "device_target.hpp"
-#include "example_od.hpp"
-#include "example_target.hpp"
+#include "example_with_settings.hpp"
 #include "in_process_bus.hpp"
 #include "transcript_player.hpp"
 
@@ -19,11 +18,17 @@
 
 namespace costa::test {
 
-/// An example device built with explicit settings (for profile-specific behaviour).
+/// The example's behaviour on a node with explicit settings (for profile-specific behaviour).
 inline InProcessBus::Factory exampleWith(const NodeSettings& settings) {
   return [settings](CanTransmitter& can) -> std::unique_ptr<host::DeviceTarget> {
-    return std::make_unique<host::HostedTarget<example::ExampleTarget>>(&gen::example::kNames,
-                                                                        nullptr, can, settings);
+    return std::make_unique<host::HostedTarget<ExampleWithSettings>>(nullptr, can, settings);
+  };
+}
+
+/// The example device as it is, configured by `config` (as costa-slave or firmware give it).
+inline InProcessBus::Factory exampleWith(const DeviceConfig& config) {
+  return [config](CanTransmitter& can) -> std::unique_ptr<host::DeviceTarget> {
+    return std::make_unique<host::HostedTarget<example::ExampleTarget>>(nullptr, can, config);
   };
 }
 

@@ -18,7 +18,7 @@ InProcessBus::InProcessBus(const std::string& device, int nodeId,
   host::TargetOptions options = extra;
   options.nodeId = nodeId;
   std::string error;
-  target_ = entry->create(can_, options, &error);
+  target_ = host::createDevice(*entry, can_, options, &error);
   if (!target_) {
     throw std::runtime_error(error);
   }

@@ -11,7 +11,7 @@
 //   wait 1000               1000 ms pass (virtual time in-process, real time over SocketCAN)
 //   silence                 the slave has sent nothing more so far (checked in-process only:
 //                           over SocketCAN, timing is not asserted)
-//   sim raw 12288 12288     a command to the device's simulation (DeviceTarget::control;
+//   sim raw 12288 12288     a command to the device's simulation (its composition's control();
 //                           over SocketCAN through costa-slave --control)
 //   ignore 1FF              frames on this CAN-ID that no `tx` step is waiting for are skipped,
 //                           by `silence` and the end check too (periodic frames the transcript

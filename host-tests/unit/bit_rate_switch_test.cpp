@@ -14,10 +14,12 @@ namespace {
 
 constexpr Microseconds kMs = 1000;
 
-NodeSettings settingsWith(RecordingBitRate* rate, NvStorage* storage = nullptr) {
-  NodeSettings settings = example::ExampleTarget::settings(1, storage);
-  settings.bitRateControl = rate;
-  return settings;
+/// The example (node-id 1) with a recording bit rate control and `storage`.
+DeviceConfig configWith(RecordingBitRate* rate, NvStorage* storage = nullptr) {
+  DeviceConfig config;
+  config.storage = storage;
+  config.bitRateControl = rate;
+  return config;
 }
 
 class TimingEvents : public NodeEvents {
@@ -34,7 +36,7 @@ class TimingEvents : public NodeEvents {
 /// control, in LSS configuration state with 500 kbit/s configured (CiA 305 index 2).
 class LssBitRateSwitch : public ::testing::Test {
  protected:
-  LssBitRateSwitch() : bus_(exampleWith(settingsWith(&rate_))) {
+  LssBitRateSwitch() : bus_(exampleWith(configWith(&rate_))) {
     rate_.clock = [this] { return bus_.now(); };
     rate_.framesSent = [this] { return bus_.can().count(); };
     EXPECT_TRUE(bus_.node().addListener(events_));
@@ -126,7 +128,7 @@ TEST_F(LssBitRateSwitch, ARefusedSwitchKeepsTheBitTimingInUseAndIsTriedAgainAtRe
 
 /// Stores LSS node-id 1 and bit timing `index` in `storage`, as an LSS master would.
 void storeBitTiming(NvStorage& storage, uint8_t index) {
-  InProcessBus bus(exampleWith(example::ExampleTarget::settings(1, &storage)));
+  InProcessBus bus(exampleWith(DeviceConfig{0, false, &storage, nullptr}));
   const std::string configure = "rx 7E5 [8] 13 00 0" + std::to_string(index) + " 00 00 00 00 00";
   EXPECT_EQ(playText("tx 701 [1] 00\nrx 7E5 [8] 04 01 00 00 00 00 00 00\n" + configure +
                          "\ntx 7E4 [8] 13 00 00 00 00 00 00 00\n"
@@ -142,7 +144,7 @@ TEST(PowerOnBitRate, AStoredLssBitTimingIsAppliedBeforeTheBootUp) {
   port::RecordingCan can;
   RecordingBitRate rate;
   rate.framesSent = [&can] { return can.count(); };
-  auto target = std::make_unique<example::ExampleTarget>(can, settingsWith(&rate, &storage));
+  auto target = std::make_unique<example::ExampleTarget>(can, configWith(&rate, &storage));
   {
     NoAllocationScope scope;
     target->start(0);
@@ -159,12 +161,12 @@ TEST(PowerOnBitRate, WithoutAStoredBitTimingThePortKeepsTheRateItWasStartedWith)
   port::MemoryStorageOf<16384> storage;
   port::RecordingCan can;
   RecordingBitRate rate;
-  auto target = std::make_unique<example::ExampleTarget>(can, settingsWith(&rate, &storage));
+  auto target = std::make_unique<example::ExampleTarget>(can, configWith(&rate, &storage));
   target->start(0);
   EXPECT_EQ(rate.count(), 0U);
   EXPECT_EQ(target->node().bitTiming(), (LssBitTiming{0, 3}));
   storeBitTiming(storage, 3);  // the same rate as the settings: nothing to switch
-  auto again = std::make_unique<example::ExampleTarget>(can, settingsWith(&rate, &storage));
+  auto again = std::make_unique<example::ExampleTarget>(can, configWith(&rate, &storage));
   again->start(0);
   EXPECT_EQ(rate.count(), 0U);
 }

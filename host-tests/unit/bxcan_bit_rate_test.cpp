@@ -83,15 +83,15 @@ TEST_F(BxCanBitRateTest, GivesUpAndWithdrawsTheRequestWhenTheControllerNeverAckn
 
 // --- the example node re-timing CAN1 -------------------------------------------------------
 
-NodeSettings settingsFor(BxCanPort& port) {
-  NodeSettings settings = example::ExampleTarget::settings(1, nullptr);
-  settings.bitRateControl = &port;
-  return settings;
+DeviceConfig configFor(BxCanPort& port) {
+  DeviceConfig config;
+  config.bitRateControl = &port;
+  return config;
 }
 
 class NodeOverBxCanBitRateTest : public BxCanBitRateTest {
  protected:
-  NodeOverBxCanBitRateTest() : target_(port_, settingsFor(port_)) {}
+  NodeOverBxCanBitRateTest() : target_(port_, configFor(port_)) {}
   void SetUp() override {
     ASSERT_TRUE(port_.start(kBtr250, kClock));
     sim_.samples.clear();

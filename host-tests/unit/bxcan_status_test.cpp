@@ -101,7 +101,7 @@ TEST_F(BxCanStatusTest, RestartForgetsTheRememberedErrorState) {
 
 class NodeOverBxCanTest : public BxCanStatusTest {
  protected:
-  NodeOverBxCanTest() : target_(port_, 1) {}
+  NodeOverBxCanTest() : target_(port_, DeviceConfig{}) {}  // node-id 1
   void SetUp() override {
     BxCanStatusTest::SetUp();
     NoAllocationScope scope;

@@ -2,10 +2,12 @@
 // and whole inputs run through the fuzz session.
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 #include "fuzz_events.hpp"
 #include "fuzz_session.hpp"
+#include "fuzzed_device.hpp"
 
 namespace costa::fuzz {
 namespace {
@@ -58,11 +60,12 @@ TEST(FuzzEvents, Frames) {
   EXPECT_EQ(events[3].frame.data[0], 0xAAU);
 }
 
-TEST(FuzzEvents, TimeControllerPowerAndSensors) {
+TEST(FuzzEvents, TimeControllerPowerAndSimulation) {
   const std::vector<Event> events = decode({
       0x00, 0x40, 200,  0x41, 0xE8, 0x03, 0x42, 3,    0x43, 0x44, 0x45, 0x7F,  // waits
       0x80, 0x81, 0x82, 0x86, 0x87, 0x88, 0x10, 0x00,                          // controller, power
-      0x89, 0x00, 0x40, 0x01, 0x00, 0x8A, 0xFF, 0x8D, 0xBF,                    // sensors, nothing
+      0x89, 0x09, 'a',  'n',  'g',  'l',  'e',  ' ',  '2',  '7',  '0',         // sim angle 270
+      0x8A, 0x8D, 0xBF,                                                        // nothing
       0xC3, 0x40, 0x00, 0x10, 0x00, 0x00, 0x00, 0x00, 0x00,                    // own SDO request
   });
   ASSERT_EQ(events.size(), 18U);
@@ -82,10 +85,10 @@ TEST(FuzzEvents, TimeControllerPowerAndSensors) {
   EXPECT_EQ(events[11].kind, EventKind::kPowerCycle);
   EXPECT_EQ(events[12].kind, EventKind::kStoragePowerCut);
   EXPECT_EQ(events[12].bytes, 16U);
-  EXPECT_EQ(events[13].kind, EventKind::kHallReadings);
-  EXPECT_EQ(events[13].readings[0], 0U);  // 16384 wraps to 0
-  EXPECT_EQ(events[13].readings[1], 1U);
-  EXPECT_EQ(events[14].code, 0x83U);
+  EXPECT_EQ(events[13].kind, EventKind::kSimulate);
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(events[13].text), events[13].textLength),
+            "angle 270");
+  EXPECT_EQ(events[14].kind, EventKind::kNothing);
   EXPECT_EQ(events[15].kind, EventKind::kNothing);
   EXPECT_EQ(events[16].kind, EventKind::kNothing);
   EXPECT_EQ(events[17].kind, EventKind::kOwnSdoRequest);
@@ -108,16 +111,40 @@ TEST(FuzzEvents, APayloadCutShortEndsTheInput) {
   EXPECT_EQ(decode({0x00, 0x08, 0x01, 0x06, 1, 2, 3}).size(), 0U);
   EXPECT_EQ(decode({0x00, 0x87, 0x41, 0x01}).size(), 1U);
   EXPECT_EQ(decode({0x00, 0xC0, 1, 2, 3, 4, 5, 6, 7}).size(), 0U);
+  EXPECT_EQ(decode({0x00, 0x89}).size(), 0U);
+  EXPECT_EQ(decode({0x00, 0x89, 0x05, 'r', 'a', 'w'}).size(), 0U);
+  EXPECT_EQ(decode({0x00, 0x89, 0x00}).size(), 1U);  // an empty command
 }
 
 TEST(FuzzSession, RunsEveryDeviceAndReportsUnknownOnes) {
-  // Header 0, SDO upload of 0x1000 to the node's own server, NMT start all, 2 s.
+  // Header 0, SDO upload of 0x1000 to the node's own server, NMT start all, a simulation
+  // command (a device without it refuses it), 2 s.
   const std::vector<uint8_t> input = {0x00, 0xC0, 0x40, 0x00, 0x10, 0x00, 0x00, 0x00, 0x00,
-                                      0x00, 0x02, 0x00, 0x00, 0x01, 0x00, 0x42, 0x02};
-  for (const char* device : {"example", "solo", "gra", "grn"}) {
+                                      0x00, 0x02, 0x00, 0x00, 0x01, 0x00, 0x89, 0x09, 'a',
+                                      'n',  'g',  'l',  'e',  ' ',  '9',  '0',  0x42, 0x02};
+  ASSERT_FALSE(fuzzedDeviceNames().empty());
+  for (const std::string& device : fuzzedDeviceNames()) {
     EXPECT_EQ(runFuzzInput(device, input.data(), input.size()), "") << device;
   }
   EXPECT_EQ(runFuzzInput("toaster", input.data(), input.size()), "unknown device 'toaster'");
+}
+
+TEST(FuzzSession, ASimulationCommandGoesToTheDevicesControl) {
+  // GRA, node-id 2: the shaft at 270 degrees, then 100 ms for the cyclic TPDO with both angles;
+  // a command the sensor refuses, and one sent to the example, which has none, change nothing.
+  const std::vector<uint8_t> input = {0x02, 0x89, 0x09, 'a',  'n',  'g',  'l',  'e', ' ', '2',
+                                      '7',  '0',  0x41, 0x64, 0x00, 0x89, 0x02, 'n', 'o', 0x00};
+  std::string trace;
+  EXPECT_EQ(runFuzzInput("gra", input.data(), input.size(), &trace), "") << trace;
+  EXPECT_NE(trace.find("event 1 sim angle 270\n"), std::string::npos) << trace;
+  EXPECT_NE(trace.find("  tx 182 [8] 0A 8C 03 84 FF FF FF 00\n"), std::string::npos) << trace;
+  EXPECT_NE(trace.find("event 3 sim no\n  = refused: unknown command 'no' (raw, angle, fault)\n"),
+            std::string::npos)
+      << trace;
+  trace.clear();
+  EXPECT_EQ(runFuzzInput("example", input.data(), input.size(), &trace), "") << trace;
+  EXPECT_NE(trace.find("  = refused: this device has no simulation commands\n"), std::string::npos)
+      << trace;
 }
 
 TEST(FuzzSession, EntryNumbersWrapAroundTheDictionary) {

@@ -35,7 +35,7 @@ CanFrame frame(uint32_t id, std::initializer_list<uint8_t> data) {
 
 class FuzzRules : public ::testing::Test {
  protected:
-  FuzzRules() : target_(can_, example::ExampleTarget::settings(1, &storage_)) { target_.start(0); }
+  FuzzRules() : target_(can_, DeviceConfig{0, false, &storage_, nullptr}) { target_.start(0); }
 
   Node& node() { return target_.node(); }
   /// An SDO request to node 1, answered at once.

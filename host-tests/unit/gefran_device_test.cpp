@@ -208,10 +208,10 @@ TEST(GefranBitRate, Example1TheSavedBitRateReachesTheControllerAtTheReset) {
 
 TEST(GefranStorage, ADamagedLssRecordIsReportedAsALssParameterChecksumError) {
   port::MemoryStorageOf<4096> storage;
-  using Target = gefran::GefranTarget<gen::gra::Values, gen::gra::Capacity>;
+  const DeviceConfig config{0, false, &storage, nullptr};  // node-id 0x7F, or a stored one
   {
     port::RecordingCan can;
-    Target target(gen::gra::kDefinition, can, 0x7F, &storage, false);
+    gefran::GraTarget target(can, config);
     target.start(0);
     EXPECT_EQ(target.node().storeLssConfiguration(5, LssBitTiming{0, 3}), LssStoreResult::kStored);
   }
@@ -221,7 +221,7 @@ TEST(GefranStorage, ADamagedLssRecordIsReportedAsALssParameterChecksumError) {
     }
   }
   port::RecordingCan can;
-  Target target(gen::gra::kDefinition, can, 0x7F, &storage, false);
+  gefran::GraTarget target(can, config);
   target.start(0);
   EXPECT_EQ(target.node().nodeId(), 0x7FU);  // defaults
   EXPECT_EQ(target.node().dictionary().readUnsigned(0x4001, 0, 0), 0x40U);
@@ -236,8 +236,7 @@ TEST(GefranErrors, AProgramChecksumErrorFromTheSensorsPortGivesItsEmcy) {
   // E56: the simulated chips never report 0x10; firmware would, through HallSensors::faults().
   port::MemoryStorageOf<4096> storage;
   port::RecordingCan can;
-  gefran::GefranTarget<gen::gra::Values, gen::gra::Capacity> target(gen::gra::kDefinition, can,
-                                                                    0x7F, &storage, false);
+  gefran::GraTarget target(can, DeviceConfig{0, false, &storage, nullptr});
   target.start(0);
   target.sensors().setFault(gefran::kProgramChecksum, true);
   target.process(0);

@@ -18,7 +18,7 @@
 namespace costa::test {
 namespace {
 
-using GraTarget = gefran::GefranTarget<gen::gra::Values, gen::gra::Capacity>;
+using gefran::GraTarget;
 
 class GraPowerCycle : public ::testing::Test {
  protected:
@@ -28,8 +28,7 @@ class GraPowerCycle : public ::testing::Test {
     bus_.reset();
     bus_ = std::make_unique<InProcessBus>([this](CanTransmitter& can) {
       return std::make_unique<host::HostedTarget<GraTarget>>(
-          &gen::gra::kNames, nullptr, gen::gra::kDefinition, can, gefran::kFactoryNodeId, &eeprom_,
-          false);
+          nullptr, can, DeviceConfig{0, false, &eeprom_, nullptr});
     });
   }
   std::string play(const std::string& text) { return playText(text, *bus_); }
@@ -46,7 +45,7 @@ class GraPowerCycle : public ::testing::Test {
     return true;
   }
 
-  port::MemoryStorageOf<GraTarget::kEepromBytes> eeprom_;
+  port::MemoryStorageOf<GraTarget::kStorageBytes> eeprom_;
   std::unique_ptr<InProcessBus> bus_;
 };
 

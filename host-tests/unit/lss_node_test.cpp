@@ -13,8 +13,12 @@
 namespace costa::test {
 namespace {
 
+/// The example's settings with `nodeId` and `storage`; a stored node-id wins at power-on.
 NodeSettings lssSettings(uint8_t nodeId, NvStorage* storage = nullptr) {
-  return example::ExampleTarget::settings(nodeId, storage);
+  NodeSettings settings = example::ExampleTarget::settings();
+  settings.nodeId = nodeId;
+  settings.storage = storage;
+  return settings;
 }
 
 TEST(LssNode, UnconfiguredNodeIsSilentUntilLssGivesItANodeId) {
@@ -154,7 +158,7 @@ class SharedBus : public LssMasterLink {
     endpoints_.push_back(std::make_unique<port::MemoryCanEndpoint>());
     bus_.attach(*endpoints_.back());
     nodes_.push_back(
-        std::make_unique<example::ExampleTarget>(*endpoints_.back(), lssSettings(nodeId), serial));
+        std::make_unique<ExampleWithSettings>(*endpoints_.back(), lssSettings(nodeId), serial));
     NoAllocationScope scope;
     nodes_.back()->start(0);
   }
@@ -180,13 +184,13 @@ class SharedBus : public LssMasterLink {
       }
     }
   }
-  example::ExampleTarget& node(size_t i) { return *nodes_[i]; }
+  ExampleWithSettings& node(size_t i) { return *nodes_[i]; }
 
  private:
   port::MemoryCanBus bus_;
   port::MemoryCanEndpoint master_;
   std::vector<std::unique_ptr<port::MemoryCanEndpoint>> endpoints_;
-  std::vector<std::unique_ptr<example::ExampleTarget>> nodes_;
+  std::vector<std::unique_ptr<ExampleWithSettings>> nodes_;
 };
 
 TEST(LssNode, FastscanFindsTheOneUnconfiguredNodeAmongSeveral) {

@@ -31,8 +31,8 @@ TEST(MultiNode, NodesShareABusAndAnswerOnlyForThemselves) {
   bus.attach(client);
   bus.attach(portA);
   bus.attach(portB);
-  example::ExampleTarget nodeA(portA, 5);
-  example::ExampleTarget nodeB(portB, 9);
+  example::ExampleTarget nodeA(portA, DeviceConfig{5, true, nullptr, nullptr});
+  example::ExampleTarget nodeB(portB, DeviceConfig{9, true, nullptr, nullptr});
   const auto deliver = [&](Microseconds now) {
     NoAllocationScope scope;
     CanFrame received;
@@ -85,9 +85,8 @@ TEST(MultiNode, NodesWithDifferentDictionariesAnswerEachWithItsOwn) {
   bus.attach(client);
   bus.attach(examplePort);
   bus.attach(sensorPort);
-  example::ExampleTarget example(examplePort, 5);
-  gefran::GefranTarget<gen::gra::Values, gen::gra::Capacity> sensor(gen::gra::kDefinition,
-                                                                    sensorPort, 9, nullptr, true);
+  example::ExampleTarget example(examplePort, DeviceConfig{5, true, nullptr, nullptr});
+  gefran::GraTarget sensor(sensorPort, DeviceConfig{9, true, nullptr, nullptr});
   const auto deliver = [&](Microseconds now) {
     NoAllocationScope scope;
     CanFrame received;

@@ -298,8 +298,8 @@ TEST_F(Solo, NewDeviceAddressTakesEffectAtTheNextReset) {
 // (Found by fuzzing: 255 went into 0x3001, whose limits are 1..127.)
 TEST(SoloNodeId, NoNodeIdIsNotAStateASoloCanBeIn) {
   InProcessBus bus([](CanTransmitter& can) -> std::unique_ptr<host::DeviceTarget> {
-    return std::make_unique<host::HostedTarget<solo::SoloTarget>>(&gen::solo::kNames, nullptr, can,
-                                                                  uint8_t{255}, nullptr, true);
+    return std::make_unique<host::HostedTarget<solo::SoloTarget>>(
+        nullptr, can, DeviceConfig{255, true, nullptr, nullptr});
   });
   EXPECT_EQ(playText(R"(
     tx 701 [1] 00
@@ -312,7 +312,7 @@ TEST(SoloNodeId, NoNodeIdIsNotAStateASoloCanBeIn) {
   options.nodeId = 255;
   port::RecordingCan can;
   std::string error;
-  EXPECT_EQ(host::findDevice("solo")->create(can, options, &error), nullptr);
+  EXPECT_EQ(host::createDevice(*host::findDevice("solo"), can, options, &error), nullptr);
   EXPECT_EQ(error, "solo has no LSS: it needs a node-id (--node-id 1..127)");
 }
 

@@ -18,12 +18,12 @@ class SoloFactoryReset : public ::testing::Test {
   std::string powerUpAndPlay(const std::string& text) {
     InProcessBus bus([this](CanTransmitter& can) -> std::unique_ptr<host::DeviceTarget> {
       return std::make_unique<host::HostedTarget<solo::SoloTarget>>(
-          &gen::solo::kNames, nullptr, can, uint8_t{1}, &eeprom_, false);
+          nullptr, can, DeviceConfig{0, false, &eeprom_, nullptr});
     });
     return playText("tx 701 [1] 00\n" + text, bus);
   }
 
-  port::MemoryStorageOf<solo::SoloTarget::kEepromBytes> eeprom_;
+  port::MemoryStorageOf<solo::SoloTarget::kStorageBytes> eeprom_;
 };
 
 // The M objects written here, and their values as written.

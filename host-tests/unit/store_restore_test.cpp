@@ -28,7 +28,8 @@ class StoreRestore : public ::testing::Test {
   /// A new node over the same storage, as after a power cycle.
   void powerOn(NodeEvents* events = nullptr) {
     bus_.reset();
-    NodeSettings settings = example::ExampleTarget::settings(1, &storage_);
+    NodeSettings settings = example::ExampleTarget::settings();
+    settings.storage = &storage_;
     settings.storageSlotAlignment = alignment_;
     auto factory = exampleWith(settings);
     bus_ = std::make_unique<InProcessBus>([&](CanTransmitter& can) {

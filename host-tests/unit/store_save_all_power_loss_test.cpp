@@ -72,7 +72,7 @@ std::string classify(const std::vector<StoredValue>& actual, const std::vector<S
 
 /// A node over `storage`, as after a power-on; it must send its boot-up and nothing else.
 std::unique_ptr<InProcessBus> powerOn(Storage& storage, NodeEvents* events = nullptr) {
-  const auto factory = exampleWith(example::ExampleTarget::settings(1, &storage));
+  const auto factory = exampleWith(DeviceConfig{0, false, &storage, nullptr});
   auto bus = std::make_unique<InProcessBus>([&](CanTransmitter& can) {
     auto target = factory(can);
     if (events != nullptr) {

@@ -11,24 +11,23 @@ namespace {
 using costa::port::stm32::bxCanBitTiming;
 using costa::port::stm32::BxCanBitTiming;
 
-constexpr costa::LssBitTiming kBitTiming{0, 3};  // CiA 305 table: 250 kbit/s
+// The example's bit timing at power-on (CiA 305 table index 3: 250 kbit/s): CAN1 starts at it.
+constexpr costa::LssBitTiming kBitTiming = costa::example::ExampleTarget::settings().bitTiming;
 constexpr uint32_t kBitRate = costa::bitRateOf(kBitTiming);
 constexpr BxCanBitTiming kTiming = bxCanBitTiming(costa::firmware::stm32f4::kApb1ClockHz, kBitRate);
 static_assert(kTiming.valid(), "APB1 clock cannot produce the bit rate exactly");
-constexpr uint8_t kNodeId = 1;
 
 // In static storage, not on the stack: the device (its 12 KiB scratch pad) is larger than the
 // stack the linker script reserves. Neither constructor touches the hardware.
 costa::port::stm32::BxCanPort can(costa::port::stm32::bxCan1());
 
-costa::NodeSettings settings() noexcept {
-  costa::NodeSettings s = costa::example::ExampleTarget::settings(kNodeId, nullptr);
-  s.bitTiming = kBitTiming;  // the rate can.start() sets
-  s.bitRateControl = &can;   // LSS activate bit timing re-times CAN1
-  return s;
+costa::DeviceConfig config() noexcept {
+  costa::DeviceConfig c;
+  c.bitRateControl = &can;  // LSS activate bit timing re-times CAN1
+  return c;
 }
 
-costa::example::ExampleTarget target(can, settings());
+costa::example::ExampleTarget target(can, config());  // node-id 1, no storage
 
 [[noreturn]] void halt() {
   for (;;) {

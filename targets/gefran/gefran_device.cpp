@@ -4,6 +4,14 @@
 #include "costa/od/little_endian.hpp"
 
 namespace costa::gefran {
+
+static_assert(features::kLss,
+              "the GRA/GRN set node-id and bit rate by LSS (CiA 305, errata E50): "
+              "build with COSTA_FEATURE_LSS=ON");
+static_assert(features::kParameterStorage,
+              "the GRA/GRN save parameters with 0x1010 and 0x5999:03 (errata E22): build with "
+              "COSTA_FEATURE_PARAMETER_STORAGE=ON");
+
 namespace {
 
 constexpr uint16_t kRawValues = 0x2000;
@@ -20,11 +28,6 @@ constexpr uint16_t kLssParameters = 0x5999;
 constexpr uint16_t kGenericError = 0x1000;
 constexpr uint32_t kSaveSignature = 0x65766173;
 
-/// The bit rates of the manual's list (lines 611-617, E26) as CiA 305 table indices: 1000, 800,
-/// 500, 250, 125 and 50 kbit/s.
-constexpr uint16_t kListedBitRates =
-    (1U << 0) | (1U << 1) | (1U << 2) | (1U << 3) | (1U << 4) | (1U << 6);
-
 /// CiA 305 bit timing table index of a bit rate in kbit/s from the manual's list, -1 if none.
 int tableIndexOf(uint32_t kbits) {
   if (kbits > 1000U) {
@@ -35,24 +38,6 @@ int tableIndexOf(uint32_t kbits) {
 }
 
 }  // namespace
-
-NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId,
-                      CanBitRateControl* bitRateControl) noexcept {
-  NodeSettings s;
-  s.nodeId = nodeId;
-  s.storage = storage;
-  s.bitRateControl = bitRateControl;
-  s.profile.pdo.tpdoOnEnteringOperational = true;  // E17
-  s.profile.emcy.reportErrorRegister = false;      // E14
-  s.profile.errorControl.nodeGuarding = false;     // E48: heartbeat only
-  s.lss = true;
-  s.lssBitRates = kListedBitRates;
-  s.storeAllGroups = groupBit(od::kGroupCommunication) | groupBit(od::kGroupApplication);  // E22
-  s.restoreAllGroups = s.storeAllGroups;
-  s.restoreAllIncludesLss = true;  // E21
-  s.storedNodeIdWins = !explicitNodeId;
-  return s;
-}
 
 GefranDevice::GefranDevice(Node& node, HallSensors& sensors) noexcept
     : node_(node), sensors_(sensors) {
@@ -121,13 +106,8 @@ void GefranDevice::updateErrors() noexcept {
   }
   reportedFaults_ = faults;
   if (added != 0U) {
-    node_.process(node_.now());  // the EMCY leaves before a change to stopped would hold it
-    const uint32_t behaviour = value(kErrorBehaviour, 0);
-    if (behaviour == 0U && node_.state() == NmtState::kOperational) {
-      node_.enterState(NmtState::kPreOperational);
-    } else if (behaviour == 2U) {
-      node_.enterState(NmtState::kStopped);
-    }
+    // 0x4000 as 0x1029 (E29): the EMCY leaves first, then 0 pre-operational, 2 stopped.
+    node_.errorControl().applyErrorBehaviour(static_cast<uint8_t>(value(kErrorBehaviour, 0)));
   }
 }
 

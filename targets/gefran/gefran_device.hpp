@@ -9,22 +9,13 @@
 
 namespace costa::gefran {
 
-static_assert(features::kLss,
-              "the GRA/GRN set node-id and bit rate by LSS (CiA 305, errata E50): "
-              "build with COSTA_FEATURE_LSS=ON");
-static_assert(features::kParameterStorage,
-              "the GRA/GRN save parameters with 0x1010 and 0x5999:03 (errata E22): build with "
-              "COSTA_FEATURE_PARAMETER_STORAGE=ON");
-
-/// Node settings of a GRA/GRN: LSS with the manual's bit rates, "save" stores PARA
-/// (communication and application groups), "load" restores PARA and LSS-PARA, event-driven
-/// TPDO sent on entering operational, 0x1001 always 0 (E14). `bitRateControl`: the CAN
-/// controller to re-time, or null (NodeSettings::bitRateControl).
-NodeSettings settings(uint8_t nodeId, NvStorage* storage, bool explicitNodeId,
-                      CanBitRateControl* bitRateControl = nullptr) noexcept;
-
 /// The factory node-id (E1).
 inline constexpr uint8_t kFactoryNodeId = 0x7F;
+
+/// The bit rates of the manual's list (lines 611-617, E26) as CiA 305 table indices: 1000, 800,
+/// 500, 250, 125 and 50 kbit/s.
+inline constexpr uint16_t kListedBitRates =
+    (1U << 0) | (1U << 1) | (1U << 2) | (1U << 3) | (1U << 4) | (1U << 6);
 
 class GefranDevice : public ObjectHook, public NodeEvents {
  public:

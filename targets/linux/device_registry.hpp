@@ -1,10 +1,13 @@
-// The devices costa-slave can be: example, solo, gra, grn, ...
+// The devices costa-slave can be: those of targets/devices.hpp, by name.
 #pragma once
+
+#include <stddef.h>
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "costa/node_settings.hpp"
 #include "device_target.hpp"
 
 namespace costa::host {
@@ -12,14 +15,24 @@ namespace costa::host {
 struct DeviceEntry {
   const char* name;
   const char* summary;
-  /// Creates the device. On failure returns nullptr and sets `error`.
-  std::unique_ptr<DeviceTarget> (*create)(CanTransmitter& can, const TargetOptions& options,
-                                          std::string* error);
+  bool lss;             ///< it has LSS: it may start without a node-id (--node-id 255)
+  size_t storageBytes;  ///< its non-volatile memory: the size of the --storage file
+  /// Builds the device with `config` over `storage` (may be null; `config.storage` is it).
+  std::unique_ptr<DeviceTarget> (*build)(CanTransmitter& can, const DeviceConfig& config,
+                                         std::unique_ptr<port::FileStorage> storage);
 };
 
+/// Every device, in the list's order.
 const std::vector<DeviceEntry>& devices();
 const DeviceEntry* findDevice(const std::string& name);
 /// "example, solo, ..." for messages.
 std::string deviceNames();
+
+/// Creates `device` as costa-slave's options say: the node-id (the device's own without one),
+/// the storage file (opened with the device's size), the bit rate control. On failure returns
+/// nullptr with one line in `error`: a storage file that cannot be opened, or no node-id for
+/// a device without LSS.
+std::unique_ptr<DeviceTarget> createDevice(const DeviceEntry& device, CanTransmitter& can,
+                                           const TargetOptions& options, std::string* error);
 
 }  // namespace costa::host

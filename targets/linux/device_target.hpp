@@ -3,7 +3,6 @@
 
 #include <stdint.h>
 
-#include <functional>
 #include <memory>
 #include <string>
 
@@ -37,24 +36,23 @@ class DeviceTarget {
   virtual Node& node() = 0;
   /// Names of the dictionary's entries (for traces).
   virtual const od::NameTable* names() const = 0;
-  /// A command to the device's simulation (costa-slave --control, transcript `sim`); returns ""
-  /// when done, else one line saying why not.
-  virtual std::string control(const std::string& command) {
-    (void)command;
-    return "this device has no simulation commands";
-  }
+  /// A command to the device's simulation (costa-slave --control, transcript `sim`): the
+  /// composition's control(). Returns "" when done, else one line saying why not.
+  virtual std::string control(const std::string& command) = 0;
+  /// Every hook and listener of the device's behaviour found room in its node.
+  virtual bool attached() const = 0;
 };
 
-/// Adapts a device composition (a class with start/onFrame/process/node, as firmware uses it)
-/// to DeviceTarget.
+/// Adapts a device composition (targets/devices.hpp: start, onFrame, process, node, control,
+/// attached, names) to DeviceTarget.
 template <typename Composition>
 class HostedTarget final : public DeviceTarget {
  public:
-  /// `storage` (may be null) is owned by the target and outlives the composition.
+  /// `storage` (may be null) is owned by the target and outlives the composition, which is
+  /// built from `args` (for a device: the CAN transmitter and its DeviceConfig).
   template <typename... Args>
-  HostedTarget(const od::NameTable* names, std::unique_ptr<port::FileStorage> storage,
-               Args&&... args)
-      : storage_(std::move(storage)), composition_(std::forward<Args>(args)...), names_(names) {}
+  explicit HostedTarget(std::unique_ptr<port::FileStorage> storage, Args&&... args)
+      : storage_(std::move(storage)), composition_(std::forward<Args>(args)...) {}
 
   void start(Microseconds now) override { composition_.start(now); }
   void onFrame(const CanFrame& frame, Microseconds now) override {
@@ -62,21 +60,17 @@ class HostedTarget final : public DeviceTarget {
   }
   Microseconds process(Microseconds now) override { return composition_.process(now); }
   Node& node() override { return composition_.node(); }
-  const od::NameTable* names() const override { return names_; }
+  const od::NameTable* names() const override { return &Composition::names(); }
+  std::string control(const std::string& command) override {
+    char why[256] = {};
+    return composition_.control(command.c_str(), why, sizeof(why)) ? std::string() : why;
+  }
+  bool attached() const override { return composition_.attached(); }
   Composition& composition() { return composition_; }
 
-  using Controller = std::function<std::string(Composition&, const std::string&)>;
-  /// Handles control() commands for this composition.
-  void setController(Controller controller) { controller_ = std::move(controller); }
-  std::string control(const std::string& command) override {
-    return controller_ ? controller_(composition_, command) : DeviceTarget::control(command);
-  }
-
  private:
-  Controller controller_;
   std::unique_ptr<port::FileStorage> storage_;
   Composition composition_;
-  const od::NameTable* names_;
 };
 
 }  // namespace costa::host

@@ -206,7 +206,7 @@ int runSlave(const SlaveOptions& options) {
   targetOptions.storagePath = options.storagePath;
   targetOptions.bitRate = &bitRate;
   std::unique_ptr<DeviceTarget> target =
-      findDevice(options.device)->create(transmitter, targetOptions, &error);
+      createDevice(*findDevice(options.device), transmitter, targetOptions, &error);
   if (!target) {
     std::fprintf(stderr, "costa-slave: %s\n", error.c_str());
     return 1;

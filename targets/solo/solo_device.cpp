@@ -23,12 +23,12 @@ int32_t roundToInt32(double value) {
 }  // namespace
 
 SoloDevice::SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId,
-                       bool explicitNodeId) noexcept
+                       bool nodeIdGiven) noexcept
     : node_(node),
       drive_(drive),
       errors_(node),
       powerOnNodeId_(powerOnNodeId),
-      explicitNodeId_(explicitNodeId) {
+      nodeIdGiven_(nodeIdGiven) {
   attached_ = node.attachHook(kFirstObject, kLastObject, *this) && node.addListener(*this);
 }
 
@@ -145,7 +145,7 @@ AbortCode SoloDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef
   const uint32_t value = loadU32(data);
   switch (ref.index()) {
     case 0x3001:
-      explicitNodeId_ = false;  // the new address is kept (M) and used from the next reset on
+      nodeIdGiven_ = false;  // the new address is kept (M) and used from the next reset on
       node_.setPendingNodeId(static_cast<uint8_t>(value));
       break;
     case 0x3007:
@@ -172,7 +172,7 @@ AbortCode SoloDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef
 
 void SoloDevice::onResetApplication() noexcept {
   // 0x3001 now holds its stored value (or its default); a command-line address overrides it.
-  if (explicitNodeId_) {
+  if (nodeIdGiven_) {
     node_.dictionary().storeUnsigned(0x3001, 0, powerOnNodeId_);
   }
   const uint32_t address = readU32(0x3001);

@@ -23,8 +23,8 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   static constexpr Microseconds kStep = 10000;
 
   /// Attaches itself to `node`. `powerOnNodeId` is the address when 0x3001 holds nothing
-  /// stored, or always when `explicitNodeId` (a command-line override).
-  SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId, bool explicitNodeId) noexcept;
+  /// stored, or always when `nodeIdGiven` (DeviceConfig::nodeIdGiven: costa-slave --node-id).
+  SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId, bool nodeIdGiven) noexcept;
 
   /// Runs the drive up to `now`; returns the next step.
   Microseconds process(Microseconds now) noexcept;
@@ -57,7 +57,7 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   DriveBackend& drive_;
   SoloErrorRegister errors_;
   uint8_t powerOnNodeId_;
-  bool explicitNodeId_;
+  bool nodeIdGiven_;
   Microseconds simulated_ = 0;  ///< time up to which the drive has run
   Microseconds identifyAt_ = kNever;
   FactoryResetHandler factoryReset_ = nullptr;

@@ -43,19 +43,4 @@ constexpr DeviceProfile profile() noexcept {
   return p;
 }
 
-/// The SOLO keeps every M object as soon as it is written (it has no store command).
-/// `bitRateControl`: the CAN controller to re-time, or null (NodeSettings::bitRateControl).
-inline NodeSettings settings(uint8_t nodeId, NvStorage* storage,
-                             CanBitRateControl* bitRateControl = nullptr) noexcept {
-  NodeSettings s;
-  s.nodeId = nodeId;
-  s.storage = storage;
-  s.bitRateControl = bitRateControl;
-  s.saveParametersOnWrite = true;
-  s.profile = profile();
-  s.staticPdoMappings =
-      StaticPdoMappings{kPdoMappings, sizeof(kPdoMappings) / sizeof(kPdoMappings[0])};
-  return s;
-}
-
 }  // namespace costa::solo

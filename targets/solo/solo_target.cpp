@@ -1,14 +1,29 @@
 #include "solo_target.hpp"
 
-#include "solo_profile.hpp"
-
 namespace costa::solo {
 
-SoloTarget::SoloTarget(CanTransmitter& can, uint8_t nodeId, NvStorage* storage, bool explicitNodeId,
-                       CanBitRateControl* bitRate) noexcept
-    : node_(gen::solo::kDefinition, can,
-            settings(address(nodeId), storage != nullptr ? storage : &eeprom_, bitRate)),
-      device_(node_, drive_, address(nodeId), explicitNodeId) {
+static_assert(
+    features::kParameterStorage,
+    "the SOLO keeps its parameters in EEPROM: build with COSTA_FEATURE_PARAMETER_STORAGE=ON");
+static_assert(
+    features::kNodeGuarding,
+    "the SOLO answers node guarding (errata A12, S5): build with COSTA_FEATURE_NODE_GUARDING=ON");
+static_assert(!SoloTarget::settings().lss && SoloTarget::settings().saveParametersOnWrite,
+              "the SOLO has no LSS and keeps every M object as it is written");
+
+NodeSettings SoloTarget::settingsFor(const DeviceConfig& config, NvStorage* eeprom) noexcept {
+  NodeSettings s = configured(settings(), config);
+  s.nodeId = address(s.nodeId);
+  if (s.storage == nullptr) {
+    s.storage = eeprom;
+  }
+  return s;
+}
+
+SoloTarget::SoloTarget(CanTransmitter& can, const DeviceConfig& config) noexcept
+    : node_(gen::solo::kDefinition, can, settingsFor(config, &eeprom_)),
+      device_(node_, drive_, address(config.nodeIdGiven ? config.nodeId : settings().nodeId),
+              config.nodeIdGiven) {
   device_.onFactoryReset(&SoloTarget::discardStoredParameters, this);
 }
 
@@ -23,6 +38,11 @@ void SoloTarget::discardStoredParameters(void* target) noexcept {
 Microseconds SoloTarget::process(Microseconds now) noexcept {
   const Microseconds deviceNext = device_.process(now);
   return earliest(deviceNext, node_.process(now));
+}
+
+bool SoloTarget::control(const char* command, char* why, size_t whySize) noexcept {
+  (void)command;
+  return refuseControl(kNoSimulationCommands, why, whySize);
 }
 
 }  // namespace costa::solo

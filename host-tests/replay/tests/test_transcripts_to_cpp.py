@@ -10,8 +10,11 @@ import unittest
 import transcripts_to_cpp as compiler
 
 
+DEVICES = ["example", "solo", "gra", "grn"]
+
+
 def parse(text, path="t.transcript"):
-    return compiler.parse_transcript(text.encode(), path)
+    return compiler.parse_transcript(text.encode(), path, DEVICES)
 
 
 class ParseErrors(unittest.TestCase):
@@ -106,7 +109,7 @@ class Tables(unittest.TestCase):
         errors = io.StringIO()
         with contextlib.redirect_stderr(errors):
             status = compiler.main(["--suite", "demo", "--symbol", "kDemoSuite", "--root", root,
-                                    "--output", output] + files)
+                                    "--output", output, "--devices", ",".join(DEVICES)] + files)
         return status, errors.getvalue(), output
 
     def test_writes_sorted_scripts_with_every_field(self):
@@ -131,9 +134,9 @@ class Tables(unittest.TestCase):
                       source)
         self.assertIn('"angle \\"9\\\\0\\""}', source)
         self.assertIn("constexpr uint32_t kIgnored0[] = {0x1FF};", source)
-        self.assertIn('{"demo/a.transcript", DeviceKind::kExample, 1, kSteps0, 2, kIgnored0, 1},',
+        self.assertIn('{"demo/a.transcript", "example", 1, kSteps0, 2, kIgnored0, 1},',
                       source)
-        self.assertIn('{"demo/b.transcript", DeviceKind::kGrn, 5, kSteps1, 1, nullptr, 0},',
+        self.assertIn('{"demo/b.transcript", "grn", 5, kSteps1, 1, nullptr, 0},',
                       source)
         self.assertIn('extern const Suite kDemoSuite = {"demo", kScripts, 2};', source)
 
