@@ -1,7 +1,6 @@
 #include "costa/od/object_dictionary.hpp"
 
-#include <string.h>
-
+#include "costa/od/bytes.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa::od {
@@ -13,17 +12,17 @@ uint64_t loadNative(const uint8_t* address, size_t size) noexcept {
     case 1: return *address;
     case 2: {
       uint16_t v = 0;
-      memcpy(&v, address, 2);
+      copyBytes(&v, address, 2);
       return v;
     }
     case 4: {
       uint32_t v = 0;
-      memcpy(&v, address, 4);
+      copyBytes(&v, address, 4);
       return v;
     }
     case 8: {
       uint64_t v = 0;
-      memcpy(&v, address, 8);
+      copyBytes(&v, address, 8);
       return v;
     }
     default: return 0;
@@ -35,15 +34,15 @@ void storeNative(uint8_t* address, uint64_t raw, size_t size) noexcept {
     case 1: *address = static_cast<uint8_t>(raw); break;
     case 2: {
       const auto v = static_cast<uint16_t>(raw);
-      memcpy(address, &v, 2);
+      copyBytes(address, &v, 2);
       break;
     }
     case 4: {
       const auto v = static_cast<uint32_t>(raw);
-      memcpy(address, &v, 4);
+      copyBytes(address, &v, 4);
       break;
     }
-    case 8: memcpy(address, &raw, 8); break;
+    case 8: copyBytes(address, &raw, 8); break;
     default: break;
   }
 }
@@ -167,9 +166,9 @@ size_t ObjectDictionary::read(const EntryRef& ref, size_t offset, uint8_t* desti
       raw += nodeId_;
     }
     storeLittleEndian(wire, raw, ref.size());
-    memcpy(destination, wire + offset, count);
+    copyBytes(destination, wire + offset, count);
   } else {
-    memcpy(destination, source + offset, count);
+    copyBytes(destination, source + offset, count);
   }
   return count;
 }
@@ -217,9 +216,9 @@ AbortCode ObjectDictionary::write(const EntryRef& ref, const uint8_t* source,
   if (isNumeric(ref.type()) && !kLittleEndianHost) {
     storeNative(target, loadLittleEndian(source, ref.size()), ref.size());
   } else {
-    memcpy(target, source, length);
+    copyBytes(target, source, length);
     if (length < ref.size()) {
-      memset(target + length, 0, ref.size() - length);
+      fillBytes(target + length, 0, ref.size() - length);
     }
   }
   return AbortCode::kNone;
@@ -276,7 +275,7 @@ void ObjectDictionary::restoreRow(const SubEntry& row) noexcept {
   for (unsigned k = 0; k < row.count; ++k) {
     const size_t offset = row.offset + k * bytes;
     uint8_t* target = values_ + offset;
-    memcpy(target, static_cast<const uint8_t*>(definition_->defaults) + offset, bytes);
+    copyBytes(target, static_cast<const uint8_t*>(definition_->defaults) + offset, bytes);
     if ((row.attributes & kNodeIdRelative) != 0U) {
       storeNative(target, loadNative(target, row.size) + nodeId_, row.size);
     }

@@ -1,7 +1,6 @@
 // The limit check of REAL32/REAL64 entries, in its own unit so that only dictionaries with such
 // an entry link floating-point code (Definition::realLimits).
-#include <string.h>
-
+#include "costa/od/bytes.hpp"
 #include "costa/od/definition.hpp"
 
 namespace costa::od {
@@ -11,11 +10,11 @@ double toDouble(DataType type, uint64_t raw) noexcept {
   if (type == DataType::kReal32) {
     float f = 0.0F;
     const auto bits = static_cast<uint32_t>(raw);
-    memcpy(&f, &bits, 4);
+    copyBytes(&f, &bits, 4);
     return static_cast<double>(f);
   }
   double d = 0.0;
-  memcpy(&d, &raw, 8);
+  copyBytes(&d, &raw, 8);
   return d;
 }
 

@@ -2,8 +2,17 @@
 
 namespace costa {
 
+void FrameRouter::clear() noexcept {
+  count_ = 0;
+  shared_ = false;
+  for (uint8_t& first : first_) {
+    first = 0;
+  }
+  stale_ = false;
+}
+
 bool FrameRouter::add(uint16_t id, Route route, uint8_t channel) noexcept {
-  if (count_ == capacity_) {
+  if (count_ == capacity_ || id > kLargestId || count_ >= UINT8_MAX) {
     return false;
   }
   size_t at = count_;
@@ -11,8 +20,14 @@ bool FrameRouter::add(uint16_t id, Route route, uint8_t channel) noexcept {
     slots_[at] = slots_[at - 1U];
     --at;
   }
+  shared_ = shared_ || (at > 0U && slots_[at - 1U].id == id) ||
+            (at < count_ && slots_[at + 1U].id == id);
   slots_[at] = RouteEntry{id, route, channel};
   ++count_;
+  // Every function code after the new route's starts one route later.
+  for (size_t code = (id >> 7U) + 1U; code <= kFunctionCodes; ++code) {
+    ++first_[code];
+  }
   return true;
 }
 

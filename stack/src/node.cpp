@@ -9,7 +9,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       dictionary_(definition, memory.values),
       tx_(can, memory.txSlots, memory.txCapacity),
       hooks_(memory.hookSlots, memory.hookCapacity),
-      access_(dictionary_, hooks_),
+      access_(dictionary_, hooks_, services_),
       emcy_(dictionary_, settings_.profile.emcy, clock_, memory.emcyConditions,
             memory.emcyConditionCapacity, memory.emcyQueue, memory.emcyQueueCapacity),
       pdoContext_{access_,    tx_,    settings_.profile.pdo,       emcy_,
@@ -29,18 +29,10 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       nmt_(NmtStateMachine::Services{dictionary_, settings_, clock_, listeners_, tx_, sdo_,
                                      heartbeat_, emcy_, sync_, pdos_, errorControl_, stored_,
                                      bitTiming_, lss_, router_},
-           settings_.nodeId) {
-  hooks_.attach(EmcyProducer::kErrorHistoryIndex, EmcyProducer::kErrorHistoryIndex, emcy_);
-  hooks_.attach(NodeGuarding::kGuardTimeIndex, NodeGuarding::kLifeTimeFactorIndex,
-                errorControl_.guardingObjects());
-  hooks_.attach(EmcyProducer::kCobIdIndex, EmcyProducer::kCobIdIndex, emcy_);
-  hooks_.attach(SyncService::kCobIdIndex, SyncService::kWindowIndex, sync_);
-  hooks_.attach(SyncService::kOverflowIndex, SyncService::kOverflowIndex, sync_);
-  hooks_.attach(HeartbeatConsumer::kIndex, HeartbeatConsumer::kIndex,
-                errorControl_.consumerObjects());
-  hooks_.attach(HeartbeatProducer::kIndex, HeartbeatProducer::kIndex, heartbeat_);
-  hooks_.attach(PdoEngine::kFirst, PdoEngine::kLast, pdos_);
-  hooks_.attach(StoreCommands::kStoreIndex, StoreCommands::kRestoreIndex, stored_.commands());
+           settings_.nodeId),
+      services_(ServiceObjects::Hooks{&emcy_, &sync_, &errorControl_.guardingObjects(),
+                                      &stored_.commands(), &errorControl_.consumerObjects(),
+                                      &heartbeat_, &pdos_}) {
   access_.setObserver(stored_.autoSave());
   pdos_.bind();
 }
@@ -54,6 +46,7 @@ bool Node::attachHook(uint16_t first, uint16_t last, ObjectHook& hook) noexcept 
     ++hooksRefused_;
     return false;
   }
+  pdos_.refreshMappings();  // entries behind the hook now go through it
   return true;
 }
 

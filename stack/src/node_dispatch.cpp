@@ -32,35 +32,7 @@ void Node::buildRoutes() noexcept {
   }
 }
 
-void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
-  clock_.advance(now);
-  if (frame.dlc > 8U || frame.extended) {
-    ++framesIgnored_;
-    return;
-  }
-  if (router_.stale()) {
-    buildRoutes();
-  }
-  bool used = false;
-  const uint8_t id = nmt_.nodeId();
-  if (frame.id > cob::kErrorControlBase && frame.id <= cob::kErrorControlBase + 127U) {
-    used = id != cob::kLssUnconfigured && nmt_.state() != NmtState::kInitialising &&
-           errorControl_.onFrame(frame, id);
-  } else {
-    const RouteEntry* entry = router_.find(frame.id);
-    for (; entry != nullptr && entry != router_.end() && entry->id == frame.id; ++entry) {
-      used = route(*entry, frame) || used;
-      if (router_.stale()) {
-        break;  // a reset rebuilt the table under our feet
-      }
-    }
-  }
-  if (!used) {
-    ++framesIgnored_;
-  }
-}
-
-bool Node::route(const RouteEntry& entry, const CanFrame& frame) noexcept {
+COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame) noexcept {
   switch (entry.route) {
     case Route::kNmt: return nmt_.onCommand(frame);
     case Route::kLss: {
@@ -95,6 +67,34 @@ bool Node::route(const RouteEntry& entry, const CanFrame& frame) noexcept {
              pdos_.remoteRequest(entry.channel, clock_.now);
   }
   return false;
+}
+
+void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
+  clock_.advance(now);
+  if (frame.dlc > 8U || frame.extended || frame.id > FrameRouter::kLargestId) {
+    ++framesIgnored_;
+    return;
+  }
+  if (router_.stale()) {
+    buildRoutes();
+  }
+  bool used = false;
+  if (frame.id - (cob::kErrorControlBase + 1U) < 127U) {
+    const uint8_t id = nmt_.nodeId();
+    used = id != cob::kLssUnconfigured && nmt_.state() != NmtState::kInitialising &&
+           errorControl_.onFrame(frame, id);
+  } else {
+    for (const RouteEntry* entry = router_.find(frame.id); entry != nullptr;
+         entry = router_.nextOfSameId(entry)) {
+      used = route(*entry, frame) || used;
+      if (router_.stale()) {
+        break;  // a reset rebuilt the table under our feet
+      }
+    }
+  }
+  if (!used) {
+    ++framesIgnored_;
+  }
 }
 
 void Node::handleSync(const SyncEvent& sync) noexcept {

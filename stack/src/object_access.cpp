@@ -1,6 +1,6 @@
 #include "costa/object_access.hpp"
 
-#include <string.h>
+#include "costa/od/bytes.hpp"
 
 namespace costa {
 
@@ -10,10 +10,10 @@ AbortCode ObjectAccess::prepareRead(uint16_t index, uint8_t subIndex, const Read
   if (found != AbortCode::kNone) {
     return found;
   }
-  if ((out->attributes() & od::kReadable) == 0U) {
+  if (!out->has(od::kReadable)) {
     return AbortCode::kReadOfWriteOnly;
   }
-  ObjectHook* hook = hooks_.find(index);
+  ObjectHook* hook = hookOf(index);
   return hook == nullptr ? AbortCode::kNone : hook->prepareRead(dictionary_, *out, request);
 }
 
@@ -23,33 +23,32 @@ AbortCode ObjectAccess::locateForWrite(uint16_t index, uint8_t subIndex,
   if (found != AbortCode::kNone) {
     return found;
   }
-  if ((out->attributes() & od::kWritable) == 0U) {
+  if (!out->has(od::kWritable)) {
     return AbortCode::kWriteOfReadOnly;
   }
   return AbortCode::kNone;
 }
 
-ObjectHook& ObjectAccess::hookFor(const od::EntryRef& ref) noexcept {
-  ObjectHook* hook = hooks_.find(ref.index());
-  if (hook == nullptr) {
-    return plain_;
-  }
-  return *hook;
+AbortCode ObjectAccess::check(const od::EntryRef& ref, const uint8_t* data,
+                              size_t length) noexcept {
+  return hookFor(ref).check(dictionary_, ref, data, length);
 }
 
 AbortCode ObjectAccess::write(const od::EntryRef& ref, const uint8_t* data,
                               size_t length) noexcept {
-  // Small values are compared before and after, so that observers can skip unchanged ones.
+  if (observer_ == nullptr) {
+    return hookFor(ref).write(dictionary_, ref, data, length);
+  }
+  // Small values are compared before and after, so that the observer can skip unchanged ones.
   uint8_t before[8] = {};
   const uint8_t* current = dictionary_.address(ref);
-  const bool comparable = observer_ != nullptr && current != nullptr && ref.size() <= 8U;
+  const bool comparable = current != nullptr && ref.size() <= 8U;
   if (comparable) {
-    memcpy(before, current, ref.size());
+    copyBytes(before, current, ref.size());
   }
   const AbortCode result = hookFor(ref).write(dictionary_, ref, data, length);
-  if (result == AbortCode::kNone && observer_ != nullptr) {
-    const bool changed = !comparable || memcmp(before, current, ref.size()) != 0;
-    observer_->onWritten(ref, changed);
+  if (result == AbortCode::kNone) {
+    observer_->onWritten(ref, !comparable || compareBytes(before, current, ref.size()) != 0);
   }
   return result;
 }

@@ -41,11 +41,24 @@ void PdoEngine::bind() noexcept {
 void PdoEngine::configure() noexcept {
   running_ = false;
   for (size_t i = 0; i < rpdoCount_; ++i) {
-    rpdos_[i].configure(context_);
+    if (!rpdos_[i].configure(context_)) {
+      ++unresolvableMappings_;
+    }
   }
   for (size_t i = 0; i < tpdoCount_; ++i) {
-    tpdos_[i].configure(context_);
+    if (!tpdos_[i].configure(context_)) {
+      ++unresolvableMappings_;
+    }
     tpdos_[i].stop();
+  }
+}
+
+void PdoEngine::refreshMappings() noexcept {
+  for (size_t i = 0; i < rpdoCount_; ++i) {
+    rpdos_[i].resolveMapping(context_);
+  }
+  for (size_t i = 0; i < tpdoCount_; ++i) {
+    tpdos_[i].resolveMapping(context_);
   }
 }
 
@@ -66,14 +79,6 @@ void PdoEngine::stop() noexcept {
   }
 }
 
-bool PdoEngine::receive(size_t channel, const CanFrame& frame, Microseconds now) noexcept {
-  if (!running_ || !rpdos_[channel].accepts(frame)) {
-    return false;
-  }
-  rpdos_[channel].onFrame(context_, frame, now);
-  return true;
-}
-
 bool PdoEngine::remoteRequest(size_t channel, Microseconds now) noexcept {
   if (!running_ || !tpdos_[channel].valid()) {
     return false;
@@ -86,11 +91,16 @@ void PdoEngine::onSync(uint8_t counter, Microseconds now, Microseconds windowEnd
   if (!running_) {
     return;
   }
-  for (size_t i = 0; i < rpdoCount_; ++i) {
-    rpdos_[i].onSync(context_);
+  for (size_t i = 0; holding_ && i < rpdoCount_; ++i) {
+    if (rpdos_[i].holding() && !rpdos_[i].onSync(context_)) {
+      ++rpdosRefused_;
+    }
   }
+  holding_ = false;
   for (size_t i = 0; i < tpdoCount_; ++i) {
-    tpdos_[i].onSync(context_, counter, now, windowEnd);
+    if (tpdos_[i].synchronous()) {
+      tpdos_[i].onSync(context_, counter, now, windowEnd);
+    }
   }
 }
 
@@ -121,8 +131,12 @@ Microseconds PdoEngine::nextDeadline() const noexcept {
 }
 
 void PdoEngine::markChanged(uint16_t index, uint8_t subIndex) noexcept {
+  const od::EntryRef ref = context_.access.dictionary().find(index, subIndex);
+  if (!ref.valid()) {
+    return;
+  }
   for (size_t i = 0; i < tpdoCount_; ++i) {
-    if (tpdos_[i].maps(index, subIndex)) {
+    if (tpdos_[i].maps(ref)) {
       tpdos_[i].signalEvent(context_.clock);
     }
   }
@@ -178,10 +192,11 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   if (written != AbortCode::kNone) {
     return written;
   }
-  if (rpdo != nullptr) {
-    rpdo->configure(context_);
-  } else {
-    tpdo->configure(context_);
+  const bool resolved = rpdo != nullptr ? rpdo->configure(context_) : tpdo->configure(context_);
+  if (!resolved) {
+    ++unresolvableMappings_;
+  }
+  if (tpdo != nullptr) {
     if (running_) {
       tpdo->start(context_, context_.clock.now, false);
     }

@@ -1,5 +1,8 @@
 #include "costa/pdo_map.hpp"
 
+#include "costa/od/bytes.hpp"
+#include "costa/od/little_endian.hpp"
+
 namespace costa {
 namespace {
 
@@ -16,6 +19,10 @@ uint8_t dummyBytes(uint16_t index) noexcept {
   }
 }
 
+bool isDummy(uint16_t index) noexcept {
+  return index >= kFirstDummy && index <= kLastDummy;
+}
+
 }  // namespace
 
 AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t value,
@@ -26,7 +33,7 @@ AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t va
   const auto index = static_cast<uint16_t>(value >> 16U);
   const auto subIndex = static_cast<uint8_t>(value >> 8U);
   const auto bits = static_cast<uint8_t>(value);
-  if (index >= kFirstDummy && index <= kLastDummy) {
+  if (isDummy(index)) {
     if (direction != PdoDirection::kReceive) {
       return AbortCode::kNotMappable;
     }
@@ -37,9 +44,9 @@ AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t va
   if (found != AbortCode::kNone) {
     return found;
   }
-  const uint16_t needed =
+  const od::Attribute needed =
       direction == PdoDirection::kReceive ? od::kRpdoMappable : od::kTpdoMappable;
-  if ((ref.attributes() & needed) == 0U) {
+  if (!ref.has(needed)) {
     return AbortCode::kNotMappable;
   }
   if (ref.size() == 0U || bits != ref.size() * 8U) {
@@ -48,8 +55,8 @@ AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t va
   return AbortCode::kNone;
 }
 
-AbortCode PdoMap::resolve(const od::ObjectDictionary& dictionary, const uint32_t* values,
-                          size_t count, PdoDirection direction) noexcept {
+AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, size_t count,
+                          PdoDirection direction) noexcept {
   clear();
   size_t bits = 0;
   for (size_t i = 0; i < count; ++i) {
@@ -58,9 +65,8 @@ AbortCode PdoMap::resolve(const od::ObjectDictionary& dictionary, const uint32_t
   if (bits > kMaxBytes * 8U || count > kMaxEntries) {
     return AbortCode::kMappingTooLong;
   }
-  Slot resolved[kMaxEntries] = {};
-  size_t used = 0;
-  size_t total = 0;
+  const od::ObjectDictionary& dictionary = access.dictionary();
+  PdoMap resolved;
   for (size_t i = 0; i < count; ++i) {
     const AbortCode verdict = checkEntry(dictionary, values[i], direction);
     if (verdict != AbortCode::kNone) {
@@ -70,70 +76,115 @@ AbortCode PdoMap::resolve(const od::ObjectDictionary& dictionary, const uint32_t
       continue;
     }
     const auto index = static_cast<uint16_t>(values[i] >> 16U);
-    Slot& slot = resolved[used++];
-    slot.bytes = static_cast<uint8_t>((values[i] & 0xFFU) / 8U);
-    if (index < kFirstDummy || index > kLastDummy) {
-      slot.ref = dictionary.find(index, static_cast<uint8_t>(values[i] >> 8U));
+    const auto subIndex = static_cast<uint8_t>(values[i] >> 8U);
+    const size_t slot = resolved.count_++;
+    Slot& entry = resolved.slots_[slot];
+    entry.length = static_cast<uint8_t>((values[i] & 0xFFU) / 8U);
+    resolved.bytes_ = static_cast<uint8_t>(resolved.bytes_ + entry.length);
+    if (isDummy(index)) {
+      resolved.skipMask_ = static_cast<uint8_t>(resolved.skipMask_ | (1U << slot));
+      continue;
     }
-    total += slot.bytes;
+    const od::EntryRef ref = dictionary.find(index, subIndex);
+    bool copied = !ref.inRom() && (kLittleEndianHost || entry.length == 1U);
+    if (direction == PdoDirection::kReceive) {
+      copied = copied && access.hookOf(index) == nullptr && ref.row->limits == 0U &&
+               ref.type() != od::DataType::kBoolean &&
+               !(access.observed() && ref.group() != od::kGroupNone);
+    }
+    if (copied) {
+      entry.where = static_cast<uint16_t>(ref.offset());
+    } else {
+      entry.where = index;
+      entry.subIndex = subIndex;
+      resolved.accessMask_ = static_cast<uint8_t>(resolved.accessMask_ | (1U << slot));
+    }
   }
-  for (size_t i = 0; i < used; ++i) {
-    slots_[i] = resolved[i];
-  }
-  count_ = used;
-  bytes_ = total;
+  *this = resolved;
   return AbortCode::kNone;
 }
 
-bool PdoMap::contains(uint16_t index, uint8_t subIndex) const noexcept {
+od::EntryRef PdoMap::locate(const ObjectAccess& access, size_t slot) const noexcept {
+  return access.dictionary().find(slots_[slot].where, slots_[slot].subIndex);
+}
+
+bool PdoMap::contains(const od::EntryRef& ref) const noexcept {
   for (size_t i = 0; i < count_; ++i) {
-    const od::EntryRef& ref = slots_[i].ref;
-    if (ref.valid() && ref.index() == index && ref.subIndex() == subIndex) {
+    const Slot& slot = slots_[i];
+    if (skipped(i)) {
+      continue;
+    }
+    const bool same = needsAccess(i) ? slot.where == ref.index() && slot.subIndex == ref.subIndex()
+                                     : !ref.inRom() && slot.where == ref.offset();
+    if (same) {
       return true;
     }
   }
   return false;
 }
 
-void PdoMap::pack(const od::ObjectDictionary& dictionary, uint8_t* out) const noexcept {
-  size_t offset = 0;
+void PdoMap::packThroughAccess(const ObjectAccess& access, uint8_t* out) const noexcept {
+  const od::ObjectDictionary& dictionary = access.dictionary();
+  const auto* values = static_cast<const uint8_t*>(dictionary.values());
   for (size_t i = 0; i < count_; ++i) {
     const Slot& slot = slots_[i];
-    for (size_t b = 0; b < slot.bytes; ++b) {
-      out[offset + b] = 0;
+    if (!needsAccess(i)) {
+      copyValue(out, values + slot.where, slot.length);
+    } else {
+      fillBytes(out, 0, slot.length);
+      dictionary.read(locate(access, i), 0, out, slot.length);
     }
-    if (slot.ref.valid()) {
-      dictionary.read(slot.ref, 0, out + offset, slot.bytes);
-    }
-    offset += slot.bytes;
+    out += slot.length;
   }
 }
 
-AbortCode PdoMap::unpack(ObjectAccess& access, const uint8_t* data) const noexcept {
-  size_t offset = 0;
+AbortCode PdoMap::check(ObjectAccess& access, const uint8_t* data) const noexcept {
   for (size_t i = 0; i < count_; ++i) {
-    const Slot& slot = slots_[i];
-    if (slot.ref.valid()) {
-      const AbortCode verdict = access.dictionary().check(slot.ref, data + offset, slot.bytes);
+    if (needsAccess(i)) {
+      const AbortCode verdict = access.check(locate(access, i), data, slots_[i].length);
       if (verdict != AbortCode::kNone) {
         return verdict;
       }
     }
-    offset += slot.bytes;
+    data += slots_[i].length;
   }
-  offset = 0;
-  AbortCode result = AbortCode::kNone;
+  return AbortCode::kNone;
+}
+
+AbortCode PdoMap::writeThroughAccess(ObjectAccess& access, const uint8_t* data) const noexcept {
+  auto* values = static_cast<uint8_t*>(access.dictionary().values());
+  // What each written entry held before: at most kMaxBytes bytes in all.
+  uint8_t before[kMaxBytes] = {};
+  uint8_t* saved[kMaxEntries] = {};
+  size_t offset = 0;
   for (size_t i = 0; i < count_; ++i) {
     const Slot& slot = slots_[i];
-    if (slot.ref.valid()) {
-      const AbortCode written = access.write(slot.ref, data + offset, slot.bytes);
-      if (written != AbortCode::kNone && result == AbortCode::kNone) {
-        result = written;
+    if (!skipped(i)) {
+      AbortCode written = AbortCode::kNone;
+      if (needsAccess(i)) {
+        const od::EntryRef ref = locate(access, i);
+        saved[i] = access.dictionary().ramAddress(ref);
+        if (saved[i] != nullptr) {
+          copyValue(before + offset, saved[i], slot.length);
+        }
+        written = access.write(ref, data + offset, slot.length);
+      } else {
+        saved[i] = values + slot.where;
+        copyValue(before + offset, saved[i], slot.length);
+        copyValue(saved[i], data + offset, slot.length);
+      }
+      if (written != AbortCode::kNone) {
+        for (size_t j = 0, back = 0; j < i; back += slots_[j].length, ++j) {
+          if (saved[j] != nullptr) {
+            copyValue(saved[j], before + back, slots_[j].length);
+          }
+        }
+        return written;
       }
     }
-    offset += slot.bytes;
+    offset += slot.length;
   }
-  return result;
+  return AbortCode::kNone;
 }
 
 }  // namespace costa

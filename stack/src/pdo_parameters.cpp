@@ -86,7 +86,7 @@ AbortCode PdoEngine::checkMappingWrite(bool receive, bool pdoValid, const od::En
     }
   }
   PdoMap candidate;
-  return candidate.resolve(dictionary, values, count, direction);
+  return candidate.resolve(context_.access, values, count, direction);
 }
 
 }  // namespace costa

@@ -3,24 +3,38 @@
 #include "costa/emcy_producer.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/node_events.hpp"
+#include "costa/od/bytes.hpp"
 
 namespace costa {
 
-void RpdoChannel::configure(PdoContext& context) noexcept {
+bool RpdoChannel::configure(PdoContext& context) noexcept {
   const od::ObjectDictionary& dictionary = context.access.dictionary();
   const PdoCobId cob =
       decodePdoCobId(static_cast<uint32_t>(dictionary.readUnsigned(index_, 1, 0x80000000U)),
                      context.profile.cobIdPolarity);
   valid_ = cob.valid && !cob.extended;
-  canId_ = cob.canId;
+  canId_ = static_cast<uint16_t>(cob.canId & 0x7FFU);
   type_ = static_cast<uint8_t>(dictionary.readUnsigned(index_, 2, 255));
-  eventTimer_ = millisecondsToMicroseconds(dictionary.readUnsigned(index_, 5, 0));
+  eventTimerMs_ = static_cast<uint16_t>(dictionary.readUnsigned(index_, 5, 0));
+  stop();
+  return resolveMapping(context);
+}
+
+bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
   uint32_t values[PdoMap::kMaxEntries] = {};
-  const size_t count = readMappingValues(dictionary, context.staticMappings, index_, values);
-  if (map_.resolve(dictionary, values, count, PdoDirection::kReceive) != AbortCode::kNone) {
+  const size_t count =
+      readMappingValues(context.access.dictionary(), context.staticMappings, index_, values);
+  const bool resolved =
+      map_.resolve(context.access, values, count, PdoDirection::kReceive) == AbortCode::kNone;
+  if (!resolved) {
     map_.clear();
   }
-  stop();
+  updateQuietDlc();
+  return resolved;
+}
+
+void RpdoChannel::updateQuietDlc() noexcept {
+  quietDlc_ = tooShort_ || tooLong_ ? 0xFFU : static_cast<uint8_t>(map_.bytes());
 }
 
 void RpdoChannel::stop() noexcept {
@@ -29,46 +43,56 @@ void RpdoChannel::stop() noexcept {
   timedOut_ = false;
 }
 
-void RpdoChannel::onFrame(PdoContext& context, const CanFrame& frame, Microseconds now) noexcept {
-  if (frame.dlc < map_.bytes()) {
+bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
+  const size_t bytes = map_.bytes();
+  if (dlc < bytes) {
+    tooShort_ = true;
+    updateQuietDlc();
     context.emcy.raise(kEmcyLengthShort, source(), kErrorCommunication);
-    return;
+    return false;
   }
-  context.emcy.clear(kEmcyLengthShort, source());
-  if (frame.dlc > map_.bytes()) {
+  if (tooShort_) {
+    tooShort_ = false;
+    context.emcy.clear(kEmcyLengthShort, source());
+  }
+  if (dlc > bytes) {
+    tooLong_ = true;
     context.emcy.raise(kEmcyLengthLong, source(), kErrorCommunication);
-  } else {
+  } else if (tooLong_) {
+    tooLong_ = false;
     context.emcy.clear(kEmcyLengthLong, source());
   }
-  if (eventTimer_ != 0U) {
-    deadline_ = now + eventTimer_;
-    context.clock.schedule(deadline_);
-    if (timedOut_) {
-      timedOut_ = false;
-      context.emcy.clear(kEmcyTimeout, source());
-    }
-  }
-  if (type_ <= 240U) {
-    for (size_t i = 0; i < map_.bytes() && i < sizeof(held_); ++i) {
-      held_[i] = frame.data[i];
-    }
-    holding_ = true;
-  } else if (type_ >= 254U) {
-    apply(context, frame.data);
+  updateQuietDlc();
+  return true;
+}
+
+void RpdoChannel::restartDeadline(PdoContext& context, Microseconds now) noexcept {
+  deadline_ = now + millisecondsToMicroseconds(eventTimerMs_);
+  context.clock.schedule(deadline_);
+  if (timedOut_) {
+    timedOut_ = false;
+    context.emcy.clear(kEmcyTimeout, source());
   }
 }
 
-void RpdoChannel::onSync(PdoContext& context) noexcept {
-  if (holding_) {
-    holding_ = false;
-    apply(context, held_);
+bool RpdoChannel::onSync(PdoContext& context) noexcept {
+  if (!holding_) {
+    return true;
   }
+  holding_ = false;
+  return apply(context, held_);
 }
 
-void RpdoChannel::apply(PdoContext& context, const uint8_t* data) noexcept {
-  map_.unpack(context.access, data);
-  const uint16_t index = index_;
-  context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoReceived(index); });
+bool RpdoChannel::applyChecked(PdoContext& context, const uint8_t* data) noexcept {
+  if (map_.check(context.access, data) != AbortCode::kNone) {
+    return false;
+  }
+  notifyWriting(context);
+  if (map_.write(context.access, data) != AbortCode::kNone) {
+    return false;
+  }
+  notifyReceived(context);
+  return true;
 }
 
 void RpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
@@ -79,10 +103,6 @@ void RpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
     const uint16_t index = index_;
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoTimeout(index); });
   }
-}
-
-Microseconds RpdoChannel::nextDeadline() const noexcept {
-  return timedOut_ ? kNever : deadline_;
 }
 
 }  // namespace costa

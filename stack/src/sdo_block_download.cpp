@@ -1,7 +1,6 @@
 #include "costa/sdo_block_download.hpp"
 
-#include <string.h>
-
+#include "costa/od/bytes.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa {
@@ -65,7 +64,7 @@ AbortCode SdoBlockDownload::segment(const uint8_t* request) noexcept {
   }
   lastSequence_ = sequence;
   if (last) {
-    memcpy(lastSegment_, request + 1, kSegmentBytes);  // its length comes with the end frame
+    copyBytes(lastSegment_, request + 1, kSegmentBytes);  // its length comes with the end frame
     acknowledge(sequence);
     phase_ = Phase::kEnd;
     return AbortCode::kNone;

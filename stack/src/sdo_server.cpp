@@ -1,7 +1,6 @@
 #include "costa/sdo_server.hpp"
 
-#include <string.h>
-
+#include "costa/od/bytes.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa {
@@ -243,7 +242,7 @@ void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcep
   index_ = loadU16(request + 1);
   subIndex_ = request[3];
   ReadRequest details;
-  memcpy(details.requestData, request + 4, 4);
+  copyBytes(details.requestData, request + 4, 4);
   const AbortCode prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
   if (prepared != AbortCode::kNone) {
     sendAbort(index_, subIndex_, prepared);

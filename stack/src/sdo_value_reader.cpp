@@ -1,7 +1,6 @@
 #include "costa/sdo_value_reader.hpp"
 
-#include <string.h>
-
+#include "costa/od/bytes.hpp"
 #include "costa/sdo_streaming.hpp"
 
 namespace costa {
@@ -28,7 +27,7 @@ AbortCode SdoValueReader::read(size_t offset, uint8_t* destination, size_t count
     if (offset + count > size_) {
       return AbortCode::kNoData;
     }
-    memcpy(destination, buffer_ + offset, count);
+    copyBytes(destination, buffer_ + offset, count);
     return AbortCode::kNone;
   }
   size_t produced = 0;

@@ -1,7 +1,6 @@
 #include "costa/sdo_value_writer.hpp"
 
-#include <string.h>
-
+#include "costa/od/bytes.hpp"
 #include "costa/sdo_streaming.hpp"
 
 namespace costa {
@@ -67,7 +66,7 @@ AbortCode SdoValueWriter::append(const uint8_t* data, size_t length) noexcept {
     if (received_ + length > bufferSize_) {
       return AbortCode::kLengthTooHigh;
     }
-    memcpy(buffer_ + received_, data, length);
+    copyBytes(buffer_ + received_, data, length);
     received_ += length;
     return AbortCode::kNone;
   }
@@ -80,7 +79,7 @@ AbortCode SdoValueWriter::append(const uint8_t* data, size_t length) noexcept {
     }
     const size_t space = bufferSize_ - (received_ - flushed_);
     const size_t count = length < space ? length : space;
-    memcpy(buffer_ + (received_ - flushed_), data, count);
+    copyBytes(buffer_ + (received_ - flushed_), data, count);
     received_ += count;
     data += count;
     length -= count;

@@ -1,7 +1,6 @@
 #include "costa/stored_image.hpp"
 
-#include <string.h>
-
+#include "costa/od/bytes.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa {
@@ -10,7 +9,7 @@ namespace {
 constexpr size_t kChunkSize = 32;
 
 bool magicIsComplete(const uint8_t* bytes) noexcept {
-  return memcmp(bytes, kImageMagic, kImageMagicSize) == 0;
+  return compareBytes(bytes, kImageMagic, kImageMagicSize) == 0;
 }
 
 /// Each magic byte is erased or right: what an erase or a magic write leaves when cut short.
@@ -39,7 +38,7 @@ ImageHeader decodeImageHeader(const uint8_t* bytes) noexcept {
 }  // namespace
 
 void encodeImageHeader(const ImageHeader& header, uint8_t* out) noexcept {
-  memcpy(out, kImageMagic, kImageMagicSize);
+  copyBytes(out, kImageMagic, kImageMagicSize);
   out[4] = header.formatVersion;
   out[5] = static_cast<uint8_t>(header.kind);
   storeLittleEndian(out + 6, header.region, 2);
@@ -111,7 +110,7 @@ bool ImageWriter::append(const uint8_t* data, size_t length) noexcept {
     if (piece > length) {
       piece = length;
     }
-    memcpy(stage_ + staged_, data, piece);
+    copyBytes(stage_ + staged_, data, piece);
     staged_ += piece;
     data += piece;
     length -= piece;

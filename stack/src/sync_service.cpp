@@ -23,10 +23,14 @@ void SyncService::configure(Microseconds now) noexcept {
 bool SyncService::onFrame(const CanFrame& frame, Microseconds now, SyncEvent* event) noexcept {
   const uint8_t expected = overflow_ >= 2U ? 1U : 0U;
   if (frame.dlc != expected) {
+    lengthError_ = true;
     emcy_.raise(kEmcyUnexpectedLength, 0, kErrorCommunication);
     return false;
   }
-  emcy_.clear(kEmcyUnexpectedLength, 0);
+  if (lengthError_) {
+    lengthError_ = false;
+    emcy_.clear(kEmcyUnexpectedLength, 0);
+  }
   event->counter = expected != 0U ? frame.data[0] : 0U;
   event->time = now;
   event->windowEnd = windowEnd(now);

@@ -1,41 +1,51 @@
 #include "costa/tpdo_channel.hpp"
 
 #include "costa/node_clock.hpp"
+#include "costa/od/bytes.hpp"
 
 namespace costa {
 
-void TpdoChannel::configure(PdoContext& context) noexcept {
+bool TpdoChannel::configure(PdoContext& context) noexcept {
   const od::ObjectDictionary& dictionary = context.access.dictionary();
   const PdoCobId cob =
       decodePdoCobId(static_cast<uint32_t>(dictionary.readUnsigned(index_, 1, 0x80000000U)),
                      context.profile.cobIdPolarity);
   valid_ = cob.valid && !cob.extended;
   rtrAllowed_ = cob.rtrAllowed;
-  canId_ = cob.canId;
+  canId_ = static_cast<uint16_t>(cob.canId & 0x7FFU);
   type_ = static_cast<uint8_t>(dictionary.readUnsigned(index_, 2, 255));
-  inhibit_ = dictionary.readUnsigned(index_, 3, 0) * kHundredMicroseconds;
-  eventTimer_ = millisecondsToMicroseconds(dictionary.readUnsigned(index_, 5, 0));
+  inhibit_ = static_cast<uint16_t>(dictionary.readUnsigned(index_, 3, 0));
+  eventTimerMs_ = static_cast<uint16_t>(dictionary.readUnsigned(index_, 5, 0));
   syncStart_ = static_cast<uint8_t>(dictionary.readUnsigned(index_, 6, 0));
-  uint32_t values[PdoMap::kMaxEntries] = {};
-  const size_t count = readMappingValues(dictionary, context.staticMappings, index_, values);
-  if (map_.resolve(dictionary, values, count, PdoDirection::kTransmit) != AbortCode::kNone) {
-    map_.clear();
-  }
   sampledValid_ = false;
+  updateSyncPeriod();
+  return resolveMapping(context);
+}
+
+bool TpdoChannel::resolveMapping(PdoContext& context) noexcept {
+  uint32_t values[PdoMap::kMaxEntries] = {};
+  const size_t count =
+      readMappingValues(context.access.dictionary(), context.staticMappings, index_, values);
+  if (map_.resolve(context.access, values, count, PdoDirection::kTransmit) != AbortCode::kNone) {
+    map_.clear();
+    return false;
+  }
+  return true;
 }
 
 void TpdoChannel::start(PdoContext& context, Microseconds now, bool initialEvent) noexcept {
   running_ = true;
   syncCount_ = 0;
   waitingForStart_ = syncStart_ != 0U;
+  updateSyncPeriod();
   sampledValid_ = false;
   inhibitUntil_ = 0;
   event_ = false;
   eventDeadline_ = kNever;
   if (eventDriven()) {
     event_ = initialEvent;
-    if (eventTimer_ != 0U) {
-      eventDeadline_ = now + eventTimer_;
+    if (eventTimerMs_ != 0U) {
+      eventDeadline_ = now + millisecondsToMicroseconds(eventTimerMs_);
     }
     context.clock.schedule(nextDeadline());
   }
@@ -43,6 +53,7 @@ void TpdoChannel::start(PdoContext& context, Microseconds now, bool initialEvent
 
 void TpdoChannel::stop() noexcept {
   running_ = false;
+  updateSyncPeriod();
   event_ = false;
   eventDeadline_ = kNever;
 }
@@ -54,11 +65,8 @@ void TpdoChannel::signalEvent(NodeClock& clock) noexcept {
   }
 }
 
-void TpdoChannel::onSync(PdoContext& context, uint8_t counter, Microseconds now,
-                         Microseconds expiry) noexcept {
-  if (!running_ || !valid_) {
-    return;
-  }
+void TpdoChannel::onOtherSync(PdoContext& context, uint8_t counter, Microseconds now,
+                              Microseconds expiry) noexcept {
   if (type_ == 0U) {
     if (context.profile.tpdoType0 == TpdoType0::kEverySync || event_) {
       event_ = false;
@@ -70,6 +78,7 @@ void TpdoChannel::onSync(PdoContext& context, uint8_t counter, Microseconds now,
         return;
       }
       waitingForStart_ = false;
+      updateSyncPeriod();
       syncCount_ = 0;
       sendCurrent(context, now, expiry);
       return;
@@ -79,7 +88,7 @@ void TpdoChannel::onSync(PdoContext& context, uint8_t counter, Microseconds now,
       sendCurrent(context, now, expiry);
     }
   } else if (type_ == 252U) {
-    map_.pack(context.access.dictionary(), sampled_);
+    map_.pack(context.access, sampled_);
     sampledValid_ = true;
   }
 }
@@ -90,7 +99,7 @@ void TpdoChannel::onRemoteRequest(PdoContext& context, Microseconds now) noexcep
   }
   if (type_ == 252U) {
     if (!sampledValid_) {
-      map_.pack(context.access.dictionary(), sampled_);
+      map_.pack(context.access, sampled_);
     }
     send(context, sampled_, now, kNever);
   } else if (type_ >= 253U ||
@@ -123,30 +132,34 @@ Microseconds TpdoChannel::nextDeadline() const noexcept {
   return next;
 }
 
+void TpdoChannel::restartTimers(PdoContext& context, Microseconds now) noexcept {
+  if (!eventDriven()) {
+    return;  // the inhibit time and the event timer are those of event-driven transmission
+  }
+  inhibitUntil_ = now + Microseconds{inhibit_} * kHundredMicroseconds;
+  if (eventTimerMs_ != 0U) {
+    eventDeadline_ = now + millisecondsToMicroseconds(eventTimerMs_);
+    context.clock.schedule(eventDeadline_);
+  }
+}
+
 void TpdoChannel::sendCurrent(PdoContext& context, Microseconds now, Microseconds expiry) noexcept {
-  uint8_t data[8] = {};
-  map_.pack(context.access.dictionary(), data);
-  send(context, data, now, expiry);
+  CanFrame frame;
+  frame.id = canId_;
+  frame.dlc = static_cast<uint8_t>(map_.bytes());
+  map_.pack(context.access, frame.data);
+  context.tx.send(frame, expiry);
+  restartTimers(context, now);
 }
 
 void TpdoChannel::send(PdoContext& context, const uint8_t* data, Microseconds now,
                        Microseconds expiry) noexcept {
   CanFrame frame;
   frame.id = canId_;
-  size_t bytes = map_.bytes();
-  if (bytes > sizeof(frame.data)) {
-    bytes = sizeof(frame.data);
-  }
-  frame.dlc = static_cast<uint8_t>(bytes);
-  for (size_t i = 0; i < bytes; ++i) {
-    frame.data[i] = data[i];
-  }
+  frame.dlc = static_cast<uint8_t>(map_.bytes());
+  copyBytes(frame.data, data, frame.dlc);
   context.tx.send(frame, expiry);
-  inhibitUntil_ = now + inhibit_;
-  if (eventTimer_ != 0U && eventDriven()) {
-    eventDeadline_ = now + eventTimer_;
-    context.clock.schedule(eventDeadline_);
-  }
+  restartTimers(context, now);
 }
 
 }  // namespace costa

@@ -2,11 +2,14 @@
 // node's CAN-IDs change (reset communication, a new PDO or SYNC COB-ID), so that a frame reaches
 // its service through one lookup instead of a chain of tests.
 //
-// The error control CAN-IDs (0x701..0x77F: heartbeats of other nodes, node guarding requests)
-// are a range and are not in the table; the node tests them before looking up.
+// The routes are sorted by CAN-ID and indexed by function code (the CAN-ID's top four bits, as
+// CiA 301's pre-defined connection set assigns them), so a lookup looks at the few routes of
+// one function code. The error control CAN-IDs (0x701..0x77F: heartbeats of other nodes, node
+// guarding requests) are a range and are not in the table; the node tests them before looking
+// up.
 //
 // Context: the one that runs the node. No allocation: entries live in caller-owned storage
-// (NodeMemory::routes). find() is O(log n) in the entries; add() O(n) (sorted insertion).
+// (NodeMemory::routes). find() is O(routes of one function code); add() O(routes).
 #pragma once
 
 #include <stddef.h>
@@ -32,33 +35,35 @@ struct RouteEntry {
 
 class FrameRouter {
  public:
+  static constexpr uint32_t kLargestId = 0x7FF;  ///< 11-bit identifiers only
+
   FrameRouter(RouteEntry* slots, size_t capacity) noexcept : slots_(slots), capacity_(capacity) {}
 
   /// Empties the table.
-  void clear() noexcept {
-    count_ = 0;
-    stale_ = false;
-  }
-  /// Adds a route, keeping the table sorted by CAN-ID (routes with one id stay in the order they
-  /// were added). False when the table is full (the capacity covers every service and PDO of
-  /// the node, so this does not happen for a node's own table).
+  void clear() noexcept;
+  /// Adds a route (`id` <= kLargestId), keeping the table sorted by CAN-ID (routes with one id
+  /// stay in the order they were added). False when the table is full (the capacity covers
+  /// every service and PDO of the node, so this does not happen for a node's own table).
   bool add(uint16_t id, Route route, uint8_t channel = 0) noexcept;
 
-  /// The first route of `id`, or null. The routes of one id follow it up to end().
+  /// The first route of `id` (<= kLargestId), or null. O(routes with the same function code).
   const RouteEntry* find(uint32_t id) const noexcept {
-    size_t low = 0;
-    size_t high = count_;
-    while (low < high) {
-      const size_t middle = (low + high) / 2U;
-      if (slots_[middle].id < id) {
-        low = middle + 1U;
-      } else {
-        high = middle;
+    const size_t code = id >> 7U;
+    for (size_t i = first_[code]; i < first_[code + 1U]; ++i) {
+      if (slots_[i].id == id) {
+        return &slots_[i];
       }
     }
-    return low < count_ && slots_[low].id == id ? &slots_[low] : nullptr;
+    return nullptr;
   }
-  const RouteEntry* end() const noexcept { return slots_ + count_; }
+  /// The route after `entry` when it has the same CAN-ID, else null.
+  const RouteEntry* nextOfSameId(const RouteEntry* entry) const noexcept {
+    if (!shared_) {
+      return nullptr;  // the usual table: one route per CAN-ID
+    }
+    const RouteEntry* next = entry + 1;
+    return next != slots_ + count_ && next->id == entry->id ? next : nullptr;
+  }
 
   /// The node's CAN-IDs changed: rebuild before the next lookup.
   void invalidate() noexcept { stale_ = true; }
@@ -66,10 +71,15 @@ class FrameRouter {
   size_t size() const noexcept { return count_; }
 
  private:
+  static constexpr size_t kFunctionCodes = 16;
+
   RouteEntry* slots_;
   size_t capacity_;
   size_t count_ = 0;
+  /// first_[c]: the index of the first route of function code c; first_[16] = count_.
+  uint8_t first_[kFunctionCodes + 1U] = {};
   bool stale_ = true;
+  bool shared_ = false;  ///< some CAN-ID has more than one route
 };
 
 }  // namespace costa

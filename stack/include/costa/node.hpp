@@ -32,6 +32,7 @@
 #include "costa/frame_router.hpp"
 #include "costa/heartbeat_producer.hpp"
 #include "costa/hook_registry.hpp"
+#include "costa/hot_path.hpp"
 #include "costa/lss_bridge.hpp"
 #include "costa/nmt_state_machine.hpp"
 #include "costa/node_clock.hpp"
@@ -44,6 +45,7 @@
 #include "costa/pdo_engine.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/sdo_server.hpp"
+#include "costa/service_objects.hpp"
 #include "costa/stored_parameters.hpp"
 #include "costa/sync_service.hpp"
 #include "costa/transmit_path.hpp"
@@ -183,7 +185,7 @@ class Node {
  private:
   Microseconds runDue() noexcept;
   void buildRoutes() noexcept;
-  bool route(const RouteEntry& entry, const CanFrame& frame) noexcept;
+  COSTA_HOT_INLINE bool route(const RouteEntry& entry, const CanFrame& frame) noexcept;
   void handleSync(const SyncEvent& sync) noexcept;
   bool preOrOperational() const noexcept {
     return nmt_.state() == NmtState::kPreOperational || nmt_.state() == NmtState::kOperational;
@@ -209,6 +211,7 @@ class Node {
   LssBridge lssBridge_;
   LssSlaveService lss_;
   NmtStateMachine nmt_;
+  ServiceObjects services_;  ///< after the services it names; access_ refers to it
   uint32_t framesIgnored_ = 0;
   uint32_t hooksRefused_ = 0;
 };

@@ -8,6 +8,7 @@
 #include "costa/hook_registry.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/od/object_dictionary.hpp"
+#include "costa/service_objects.hpp"
 
 namespace costa {
 
@@ -29,12 +30,25 @@ class WriteObserver {
   WriteObserver& operator=(WriteObserver&&) = default;
 };
 
+/// The way every remote access goes (SDO, PDO entries that need more than a copy): access
+/// rights, the hook of the entry (the application's, else the owning service's, else the plain
+/// dictionary), then the dictionary's checks. Context: the one that runs the node; no
+/// allocation; every call O(log objects + application hooks) plus the hook's cost.
 class ObjectAccess {
  public:
-  ObjectAccess(od::ObjectDictionary& dictionary, const HookRegistry& hooks) noexcept
-      : dictionary_(dictionary), hooks_(hooks) {}
+  ObjectAccess(od::ObjectDictionary& dictionary, const HookRegistry& hooks,
+               const ServiceObjects& services) noexcept
+      : dictionary_(dictionary), hooks_(hooks), services_(services) {}
 
   od::ObjectDictionary& dictionary() noexcept { return dictionary_; }
+  const od::ObjectDictionary& dictionary() const noexcept { return dictionary_; }
+
+  /// The hook behind `index`: an application hook, else the service that owns the object,
+  /// else null (the plain dictionary).
+  ObjectHook* hookOf(uint16_t index) const noexcept {
+    ObjectHook* hook = hooks_.find(index);
+    return hook != nullptr ? hook : services_.find(index);
+  }
 
   /// Locates an entry for reading: kNoObject, kNoSubIndex, kReadOfWriteOnly, or the hook's
   /// refusal. On success the value may be read from the dictionary.
@@ -44,6 +58,8 @@ class ObjectAccess {
   /// Locates an entry for writing: kNoObject, kNoSubIndex, kWriteOfReadOnly.
   AbortCode locateForWrite(uint16_t index, uint8_t subIndex, od::EntryRef* out) const noexcept;
 
+  /// Checks a value as a write of a located entry would, without writing (ObjectHook::check).
+  AbortCode check(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
   /// Writes a located entry through its hook (or the plain dictionary).
   AbortCode write(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
 
@@ -55,17 +71,23 @@ class ObjectAccess {
                         size_t length, bool last, size_t indicatedSize) noexcept;
   void abortWriteStream(const od::EntryRef& ref, AbortCode reason) noexcept;
 
+  /// Tells `observer` (may be null) of every successful remote write.
   void setObserver(WriteObserver* observer) noexcept { observer_ = observer; }
+  bool observed() const noexcept { return observer_ != nullptr; }
 
  private:
-  WriteObserver* observer_ = nullptr;
   /// The behaviour of an entry no hook covers.
   class PlainHook final : public ObjectHook {};
 
-  ObjectHook& hookFor(const od::EntryRef& ref) noexcept;
+  ObjectHook& hookFor(const od::EntryRef& ref) noexcept {
+    ObjectHook* hook = hookOf(ref.index());
+    return hook != nullptr ? *hook : plain_;
+  }
 
   od::ObjectDictionary& dictionary_;
   const HookRegistry& hooks_;
+  const ServiceObjects& services_;
+  WriteObserver* observer_ = nullptr;
   PlainHook plain_;
 };
 

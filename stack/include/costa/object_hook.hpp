@@ -41,6 +41,16 @@ class ObjectHook {
     return AbortCode::kNone;
   }
 
+  /// Checks a value a remote write of `length` wire bytes would store, without storing it or
+  /// acting: the first phase of an RPDO, which writes none of its entries unless every one
+  /// passes. The default is the dictionary's check (length, BOOLEAN range, limits); a hook
+  /// whose write() refuses more values should refuse them here too, so that an RPDO it refuses
+  /// is refused before anything is written.
+  virtual AbortCode check(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                          const uint8_t* data, size_t length) noexcept {
+    return dictionary.check(ref, data, length);
+  }
+
   /// Carries out a remote write of `length` wire bytes (access rights already checked). The
   /// default checks and stores the value; an override may validate further, transform, store
   /// elsewhere, or act after storing.

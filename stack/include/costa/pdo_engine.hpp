@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/hot_path.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/pdo_channel.hpp"
 #include "costa/rpdo_channel.hpp"
@@ -23,15 +24,30 @@ class PdoEngine : public ObjectHook {
   /// Finds the PDO communication objects in the dictionary (0x1400..0x15FF, 0x1800..0x19FF) and
   /// binds one channel to each, up to the capacities. Call once, before the first reset.
   void bind() noexcept;
-  /// Reads every PDO's parameters (after a reset communication).
+  /// Reads every PDO's parameters and resolves its mapping (after a reset communication). A
+  /// mapping that cannot be resolved leaves its PDO empty and is counted
+  /// (unresolvableMappings()).
   void configure() noexcept;
+  /// Resolves every mapping again without touching anything else (a hook was attached: the
+  /// entries it covers now need more than a copy).
+  void refreshMappings() noexcept;
 
   void start(Microseconds now) noexcept;  ///< entering operational
   void stop() noexcept;                   ///< leaving operational
 
   /// A data frame for RPDO `channel` (the node's routing table found it), operational. False
   /// when the PDO does not take it (not running, not valid). O(mapped entries).
-  bool receive(size_t channel, const CanFrame& frame, Microseconds now) noexcept;
+  COSTA_HOT_INLINE bool receive(size_t channel, const CanFrame& frame, Microseconds now) noexcept {
+    RpdoChannel& rpdo = rpdos_[channel];
+    if (!running_ || !rpdo.valid()) {
+      return false;
+    }
+    if (!rpdo.onFrame(context_, frame, now)) {
+      ++rpdosRefused_;
+    }
+    holding_ = holding_ || rpdo.holding();
+    return true;
+  }
   /// A remote request for TPDO `channel`, operational. O(mapped entries).
   bool remoteRequest(size_t channel, Microseconds now) noexcept;
   /// A SYNC (operational): held RPDO data is applied, then synchronous TPDOs are sent.
@@ -74,6 +90,7 @@ class PdoEngine : public ObjectHook {
   size_t tpdoCapacity_;
   size_t tpdoCount_ = 0;
   bool running_ = false;
+  bool holding_ = false;  ///< some RPDO holds data for the next SYNC
   uint32_t rpdosRefused_ = 0;
   uint32_t unresolvableMappings_ = 0;
 };

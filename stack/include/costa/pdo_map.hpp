@@ -1,12 +1,23 @@
-// The mapping of a PDO: which dictionary entries fill which bytes of the frame (CiA 301 7.5.2.37,
+// The mapping of a PDO, resolved once when it is configured into what its frames need: where
+// each entry's bytes live and whether they can be copied as they are (CiA 301 7.5.2.37,
 // 7.5.2.39). Costa maps whole entries at byte granularity: an entry's mapping length must equal
 // its size in bits.
+//
+// An entry is copied straight between the frame and the dictionary's RAM block unless it needs
+// more: an RPDO entry with a hook (the application's or a service's), with limits, a BOOLEAN,
+// or a stored entry when writes are observed (save on write); a TPDO entry in ROM. Those go
+// through ObjectAccess (hook, checks) and the dictionary. Hooks attached later take effect when
+// the mapping is resolved again (PdoEngine::refreshMappings()).
+//
+// Context: the one that runs the node. No allocation. pack()/unpack() are O(mapped entries) plus
+// a lookup and the hook's cost for each entry that needs more than a copy.
 #pragma once
 
 #include <stddef.h>
 #include <stdint.h>
 
 #include "costa/object_access.hpp"
+#include "costa/od/bytes.hpp"
 #include "costa/od/object_dictionary.hpp"
 
 namespace costa {
@@ -26,40 +37,91 @@ class PdoMap {
   /// Checks one mapping value for `direction`: kNoObject / kNoSubIndex (no such entry),
   /// kNotMappable (entry not mappable in this direction), kParameterIncompatible (length not a
   /// whole entry). Dummy entries (indices 0x0002..0x0007, the integer data types) are accepted
-  /// for RPDOs only. A value of 0 is accepted (an unused entry).
+  /// for RPDOs only. A value of 0 is accepted (an unused entry). O(log objects).
   static AbortCode checkEntry(const od::ObjectDictionary& dictionary, uint32_t value,
                               PdoDirection direction) noexcept;
 
   /// Resolves `count` mapping values; on failure the map is left empty and the abort code is
-  /// returned (checkEntry's codes, kMappingTooLong beyond 64 bits).
-  AbortCode resolve(const od::ObjectDictionary& dictionary, const uint32_t* values, size_t count,
+  /// returned (checkEntry's codes, kMappingTooLong beyond 64 bits). O(count x log objects).
+  AbortCode resolve(const ObjectAccess& access, const uint32_t* values, size_t count,
                     PdoDirection direction) noexcept;
 
   void clear() noexcept {
     count_ = 0;
     bytes_ = 0;
+    accessMask_ = 0;
+    skipMask_ = 0;
   }
   size_t bytes() const noexcept { return bytes_; }
   size_t count() const noexcept { return count_; }
-  /// True when the entry (index, subIndex) is mapped.
-  bool contains(uint16_t index, uint8_t subIndex) const noexcept;
+  /// True when every entry is copied as it is (no hook, no check, no dummy).
+  bool plain() const noexcept { return (accessMask_ | skipMask_) == 0U; }
+  /// True when the sub-index `ref` locates is mapped.
+  bool contains(const od::EntryRef& ref) const noexcept;
 
-  /// Copies the mapped values into `out` (bytes() bytes). All values are read in one call, so
-  /// a frame never mixes two writes of an entry.
-  void pack(const od::ObjectDictionary& dictionary, uint8_t* out) const noexcept;
+  /// Copies the mapped values into `out` (bytes() bytes), all in one call, so a frame never
+  /// mixes two writes of an entry.
+  void pack(const ObjectAccess& access, uint8_t* out) const noexcept {
+    if (accessMask_ != 0U) {
+      packThroughAccess(access, out);
+      return;
+    }
+    const auto* values = static_cast<const uint8_t*>(access.dictionary().values());
+    for (size_t i = 0; i < count_; ++i) {
+      copyValue(out, values + slots_[i].where, slots_[i].length);
+      out += slots_[i].length;
+    }
+  }
 
-  /// Writes received data (at least bytes() bytes) into the mapped entries through their hooks.
-  /// Every value is checked first; if one fails, nothing is written and its abort code returned.
-  AbortCode unpack(ObjectAccess& access, const uint8_t* data) const noexcept;
+  /// First phase of an RPDO: checks every entry of `data` (at least bytes() bytes) as its hook
+  /// or the dictionary would, writing nothing. The first refusal's abort code.
+  AbortCode check(ObjectAccess& access, const uint8_t* data) const noexcept;
+  /// Second phase: writes every entry. When an entry's hook refuses (a hook that checks only in
+  /// write()), the entries already written get their previous bytes back and the refusal is
+  /// returned: an RPDO is written whole or not at all. With plain(), a copy per entry.
+  AbortCode write(ObjectAccess& access, const uint8_t* data) const noexcept {
+    if (!plain()) {
+      return writeThroughAccess(access, data);
+    }
+    auto* values = static_cast<uint8_t*>(access.dictionary().values());
+    for (size_t i = 0; i < count_; ++i) {
+      copyValue(values + slots_[i].where, data, slots_[i].length);
+      data += slots_[i].length;
+    }
+    return AbortCode::kNone;
+  }
 
  private:
+  /// Copies one value; the common sizes are a load and a store.
+  static void copyValue(uint8_t* to, const uint8_t* from, size_t length) noexcept {
+    if (length == 4U) {
+      copyBytes(to, from, 4);
+    } else if (length == 1U) {
+      *to = *from;
+    } else if (length == 2U) {
+      copyBytes(to, from, 2);
+    } else {
+      copyBytes(to, from, length);
+    }
+  }
+  void packThroughAccess(const ObjectAccess& access, uint8_t* out) const noexcept;
+  AbortCode writeThroughAccess(ObjectAccess& access, const uint8_t* data) const noexcept;
+  /// Where an entry's bytes are: the offset of its value in the RAM block, or for an entry
+  /// that needs ObjectAccess (its bit in accessMask_) its index and sub-index.
   struct Slot {
-    od::EntryRef ref;  ///< invalid for a dummy entry
-    uint8_t bytes = 0;
+    uint16_t where;
+    uint8_t subIndex;
+    uint8_t length;
   };
+  bool needsAccess(size_t slot) const noexcept { return (accessMask_ & (1U << slot)) != 0U; }
+  bool skipped(size_t slot) const noexcept { return (skipMask_ & (1U << slot)) != 0U; }
+  od::EntryRef locate(const ObjectAccess& access, size_t slot) const noexcept;
+
   Slot slots_[kMaxEntries] = {};
-  size_t count_ = 0;
-  size_t bytes_ = 0;
+  uint8_t count_ = 0;
+  uint8_t bytes_ = 0;
+  uint8_t accessMask_ = 0;  ///< bit i: slot i goes through ObjectAccess
+  uint8_t skipMask_ = 0;    ///< bit i: slot i is a dummy entry (RPDO)
 };
 
 }  // namespace costa

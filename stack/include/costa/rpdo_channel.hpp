@@ -1,9 +1,20 @@
 // One receive PDO (CiA 301 7.2.2): communication parameter 0x1400+n, mapping 0x1600+n (or the
-// device's static mapping).
+// device's static mapping), resolved into where each entry's bytes go when configured.
+//
+// An RPDO is written whole or not at all: every entry is checked first (PdoMap::check), the
+// listeners hear onRpdoWriting, the entries are written, then onRpdoReceived. An entry refused
+// by its hook leaves every entry as it was; the RPDO is counted (PdoEngine::rpdosRefused()) and
+// no listener hears of it.
+//
+// Context: the one that runs the node. No allocation. onFrame()/onSync() are O(mapped
+// entries); with a plain mapping (no hook, no limits) a copy per entry.
 #pragma once
 
 #include <stdint.h>
 
+#include "costa/hot_path.hpp"
+#include "costa/node_events.hpp"
+#include "costa/od/bytes.hpp"
 #include "costa/pdo_channel.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/time.hpp"
@@ -19,8 +30,11 @@ class RpdoChannel {
   void bind(uint16_t communicationIndex) noexcept { index_ = communicationIndex; }
   uint16_t communicationIndex() const noexcept { return index_; }
 
-  /// Reads the communication parameters and the mapping; drops held data.
-  void configure(PdoContext& context) noexcept;
+  /// Reads the communication parameters and resolves the mapping; drops held data. False when
+  /// the mapping could not be resolved (the PDO then carries nothing). O(entries x log objects).
+  bool configure(PdoContext& context) noexcept;
+  /// Resolves the mapping again (a hook was attached). Same result as configure().
+  bool resolveMapping(PdoContext& context) noexcept;
 
   bool valid() const noexcept { return valid_; }
   uint32_t canId() const noexcept { return canId_; }
@@ -35,31 +49,76 @@ class RpdoChannel {
   /// A received PDO (node operational). Too few bytes: EMCY 0x8210, nothing applied. More bytes
   /// than mapped: the mapped bytes are applied and EMCY 0x8220 is raised (cleared by the next
   /// PDO of the right length). Types 0..240 hold the data until the next SYNC; 254/255 apply it
-  /// at once.
-  void onFrame(PdoContext& context, const CanFrame& frame, Microseconds now) noexcept;
-  /// Applies the data held since the previous SYNC.
-  void onSync(PdoContext& context) noexcept;
+  /// at once. False when an entry was refused (nothing written).
+  COSTA_HOT_INLINE bool onFrame(PdoContext& context, const CanFrame& frame,
+                                      Microseconds now) noexcept {
+    if (frame.dlc != quietDlc_ && !checkLength(context, frame.dlc)) {
+      return true;
+    }
+    if (eventTimerMs_ != 0U) {
+      restartDeadline(context, now);
+    }
+    if (type_ >= 254U) {
+      return apply(context, frame.data);
+    }
+    if (type_ <= 240U) {
+      copyBytes(held_, frame.data, sizeof(held_));
+      holding_ = true;
+    }
+    return true;
+  }
+  /// Applies the data held since the previous SYNC. False when an entry was refused.
+  bool onSync(PdoContext& context) noexcept;
+  bool holding() const noexcept { return holding_; }
   /// Deadline monitoring with the event timer (sub-index 5): EMCY 0x8250 when no PDO arrived
   /// within it after the first one.
   void process(PdoContext& context, Microseconds now) noexcept;
-  Microseconds nextDeadline() const noexcept;
+  Microseconds nextDeadline() const noexcept { return timedOut_ ? kNever : deadline_; }
   /// Leaving operational: held data and monitoring stop.
   void stop() noexcept;
 
  private:
-  void apply(PdoContext& context, const uint8_t* data) noexcept;
+  /// Writes `data` into the mapped entries, with the listeners' notifications around it.
+  bool apply(PdoContext& context, const uint8_t* data) noexcept {
+    if (!map_.plain()) {
+      return applyChecked(context, data);
+    }
+    notifyWriting(context);
+    map_.write(context.access, data);
+    notifyReceived(context);
+    return true;
+  }
+  bool applyChecked(PdoContext& context, const uint8_t* data) noexcept;
+  void notifyWriting(PdoContext& context) const noexcept {
+    const uint16_t index = index_;
+    context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoWriting(index); });
+  }
+  void notifyReceived(PdoContext& context) const noexcept {
+    const uint16_t index = index_;
+    context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoReceived(index); });
+  }
+  void restartDeadline(PdoContext& context, Microseconds now) noexcept;
+  void updateQuietDlc() noexcept;
+  /// Raises or clears EMCY 0x8210/0x8220 for a frame of `dlc` bytes; looks nothing up while
+  /// the length stays right. False for a frame too short to apply.
+  bool checkLength(PdoContext& context, uint8_t dlc) noexcept;
   uint8_t source() const noexcept { return static_cast<uint8_t>(index_ & 0xFFU); }
 
   uint16_t index_ = 0;
-  bool valid_ = false;
-  uint32_t canId_ = 0;
+  uint16_t canId_ = 0;
+  uint16_t eventTimerMs_ = 0;
   uint8_t type_ = 0;
-  Microseconds eventTimer_ = 0;
-  PdoMap map_;
-  uint8_t held_[8] = {};
+  bool valid_ = false;
   bool holding_ = false;
-  Microseconds deadline_ = kNever;
   bool timedOut_ = false;
+  bool tooShort_ = false;  ///< EMCY 0x8210 raised
+  bool tooLong_ = false;   ///< EMCY 0x8220 raised
+  /// The DLC for which checkLength() has nothing to do: the mapped bytes while neither length
+  /// EMCY is raised, else none (0xFF).
+  uint8_t quietDlc_ = 0;
+  Microseconds deadline_ = kNever;
+  PdoMap map_;
+  uint8_t held_[PdoMap::kMaxBytes] = {};
 };
 
 }  // namespace costa

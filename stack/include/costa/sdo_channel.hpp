@@ -4,10 +4,9 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include <string.h>
-
 #include "costa/cob_ids.hpp"
 #include "costa/od/abort_code.hpp"
+#include "costa/od/bytes.hpp"
 #include "costa/od/little_endian.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/transmit_path.hpp"
@@ -28,7 +27,7 @@ class SdoChannel {
     CanFrame frame;
     frame.id = cob::kSdoTxBase + nodeId_;
     frame.dlc = 8;
-    memcpy(frame.data, data, 8);
+    copyBytes(frame.data, data, 8);
     tx_.send(frame);
   }
 

@@ -1,9 +1,14 @@
 // One transmit PDO (CiA 301 7.2.2): communication parameter 0x1800+n, mapping 0x1A00+n (or the
-// device's static mapping).
+// device's static mapping), resolved into where each entry's bytes come from when configured.
+//
+// Context: the one that runs the node. No allocation. Sending is O(mapped entries): with a
+// plain mapping a copy per entry straight into the frame, which goes to the controller at once
+// when nothing waits ahead of it (TransmitPath).
 #pragma once
 
 #include <stdint.h>
 
+#include "costa/hot_path.hpp"
 #include "costa/pdo_channel.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/time.hpp"
@@ -15,62 +20,88 @@ class TpdoChannel {
   void bind(uint16_t communicationIndex) noexcept { index_ = communicationIndex; }
   uint16_t communicationIndex() const noexcept { return index_; }
 
-  /// Reads the communication parameters and the mapping.
-  void configure(PdoContext& context) noexcept;
+  /// Reads the communication parameters and resolves the mapping. False when the mapping could
+  /// not be resolved (the PDO then carries nothing). O(entries x log objects).
+  bool configure(PdoContext& context) noexcept;
+  /// Resolves the mapping again (a hook was attached). Same result as configure().
+  bool resolveMapping(PdoContext& context) noexcept;
 
   bool valid() const noexcept { return valid_; }
   uint32_t canId() const noexcept { return canId_; }
   uint8_t transmissionType() const noexcept { return type_; }
   bool rtrAllowed() const noexcept { return rtrAllowed_; }
   bool eventDriven() const noexcept { return type_ >= 254U; }
-
-  /// True for a remote request on this PDO's CAN-ID.
-  bool acceptsRemoteRequest(const CanFrame& frame) const noexcept {
-    return valid_ && frame.rtr && !frame.extended && frame.id == canId_;
-  }
+  /// Sends at SYNCs (types 0..240) or samples at them (252).
+  bool synchronous() const noexcept { return type_ <= 240U || type_ == 252U; }
 
   /// Entering operational (or reconfigured while operational): SYNC counting restarts, the
   /// event timer starts, and an event-driven PDO is sent once when `initialEvent`.
   void start(PdoContext& context, Microseconds now, bool initialEvent) noexcept;
   void stop() noexcept;
 
-  /// A SYNC with `counter` (0 when the SYNC carries none). Synchronous PDOs are queued with
+  /// A SYNC with `counter` (0 when the SYNC carries none). Synchronous PDOs are sent with
   /// `expiry` (end of the SYNC window) so that they are dropped if they cannot go out in time.
-  void onSync(PdoContext& context, uint8_t counter, Microseconds now, Microseconds expiry) noexcept;
+  COSTA_HOT_INLINE void onSync(PdoContext& context, uint8_t counter, Microseconds now,
+                               Microseconds expiry) noexcept {
+    if (syncPeriod_ != 0U) {  // running, valid, synchronous cyclic and counting
+      if (++syncCount_ >= syncPeriod_) {
+        syncCount_ = 0;
+        sendNow(context, expiry);
+      }
+      return;
+    }
+    if (running_ && valid_) {
+      onOtherSync(context, counter, now, expiry);
+    }
+  }
   /// A remote request: answered when the COB-ID allows RTR and the type does (profile).
   void onRemoteRequest(PdoContext& context, Microseconds now) noexcept;
   /// The application changed mapped data (or asks for a transmission): an event.
   void signalEvent(NodeClock& clock) noexcept;
-  bool maps(uint16_t index, uint8_t subIndex) const noexcept {
-    return map_.contains(index, subIndex);
-  }
+  bool maps(const od::EntryRef& ref) const noexcept { return map_.contains(ref); }
 
   /// Event-driven transmission: events and the event timer, within the inhibit time.
   void process(PdoContext& context, Microseconds now) noexcept;
   Microseconds nextDeadline() const noexcept;
 
  private:
+  void onOtherSync(PdoContext& context, uint8_t counter, Microseconds now,
+                   Microseconds expiry) noexcept;
+  /// Sends the current values of a synchronous PDO (no inhibit time, no event timer).
+  COSTA_HOT_INLINE void sendNow(PdoContext& context, Microseconds expiry) noexcept {
+    CanFrame frame;
+    frame.id = canId_;
+    frame.dlc = static_cast<uint8_t>(map_.bytes());
+    map_.pack(context.access, frame.data);
+    context.tx.send(frame, expiry);
+  }
   void send(PdoContext& context, const uint8_t* data, Microseconds now,
             Microseconds expiry) noexcept;
   void sendCurrent(PdoContext& context, Microseconds now, Microseconds expiry) noexcept;
+  void restartTimers(PdoContext& context, Microseconds now) noexcept;
+  /// Keeps syncPeriod_ true to the state it summarises.
+  void updateSyncPeriod() noexcept {
+    syncPeriod_ = running_ && valid_ && type_ - 1U < 240U && !waitingForStart_ ? type_ : 0U;
+  }
 
   uint16_t index_ = 0;
-  bool valid_ = false;
-  bool rtrAllowed_ = false;
-  uint32_t canId_ = 0;
+  uint16_t canId_ = 0;
+  uint16_t inhibit_ = 0;       ///< 100 us units (sub-index 3)
+  uint16_t eventTimerMs_ = 0;  ///< sub-index 5
   uint8_t type_ = 0;
   uint8_t syncStart_ = 0;
-  Microseconds inhibit_ = 0;
-  Microseconds eventTimer_ = 0;
-  PdoMap map_;
-  bool running_ = false;
   uint8_t syncCount_ = 0;
+  uint8_t syncPeriod_ = 0;  ///< the type of a running synchronous cyclic PDO that counts SYNCs
+  bool valid_ = false;
+  bool rtrAllowed_ = false;
+  bool running_ = false;
   bool waitingForStart_ = false;
   bool event_ = false;
-  uint8_t sampled_[8] = {};
   bool sampledValid_ = false;
   Microseconds inhibitUntil_ = 0;
   Microseconds eventDeadline_ = kNever;
+  PdoMap map_;
+  uint8_t sampled_[PdoMap::kMaxBytes] = {};
 };
 
 }  // namespace costa
