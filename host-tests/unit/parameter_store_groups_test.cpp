@@ -118,8 +118,8 @@ struct ManyGroupsTables {
       objects[i] =
           od::Object{static_cast<uint16_t>(0x2000U + i), od::ObjectCode::kVar, 1, &subs[i]};
     }
-    definition = od::Definition{objects, kCount,   defaults, defaults, kCount,
-                                0x1234U, "groups", nullptr,  nullptr};
+    definition = od::Definition{objects,  kCount,  defaults, defaults, kCount, 0x1234U,
+                                "groups", nullptr, nullptr,  nullptr,  0};
   }
   od::SubEntry subs[kCount]{};
   od::Object objects[kCount]{};

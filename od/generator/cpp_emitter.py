@@ -166,6 +166,22 @@ def rows_of(obj, row_of: dict) -> list:
     return rows
 
 
+def object_slots(indices: list) -> tuple:
+    """The object hash table of od::Definition: (bits, slots), 2^bits slots filled to at most
+    60 %, slot = 1 + position of the object or 0; objectSlotOf() in definition.hpp, linear
+    probing."""
+    bits = 3
+    while (1 << bits) * 6 < len(indices) * 10:
+        bits += 1
+    slots = [0] * (1 << bits)
+    for position, index in enumerate(indices):
+        slot = ((index * 40503) & 0xFFFF) >> (16 - bits)
+        while slots[slot] != 0:
+            slot = (slot + 1) & ((1 << bits) - 1)
+        slots[slot] = position + 1
+    return bits, slots
+
+
 def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
     lines = [_banner(name, source).rstrip("\n"), f'#include "{name}_od.hpp"', "",
              "#include <stddef.h>", "", f"namespace costa::gen::{name} {{", "namespace {", ""]
@@ -210,6 +226,11 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
     for actual, expected, label in run_checks:
         lines.append(f"static_assert({actual} == {expected}, \"{label} follows the value "
                      f"before it\");")
+    bits, slots = object_slots([obj.index for obj in device.objects])
+    lines.append("constexpr uint16_t kObjectSlots[] = {")
+    for start in range(0, len(slots), 16):
+        lines.append(_INDENT * 2 + ", ".join(str(v) for v in slots[start:start + 16]) + ",")
+    lines += ["};", ""]
     lines.append("static_assert(sizeof(Values) <= 0xFFFFU && sizeof(Constants) <= 0xFFFFU, "
                  "\"value offsets are 16-bit: keep each block under 64 KiB\");")
     real_limits = any(e.has_limits and e.data_type.kind == "real"
@@ -225,6 +246,8 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
               f"{_INDENT * 2}{text_literal(device.product_name)},",
               f"{_INDENT * 2}{'kLimits' if limit_rows else 'nullptr'},",
               f"{_INDENT * 2}{'&costa::od::checkRealLimits' if real_limits else 'nullptr'},",
+              f"{_INDENT * 2}kObjectSlots,",
+              f"{_INDENT * 2}{bits},",
               "};", "", f"}}  // namespace costa::gen::{name}", ""]
     return "\n".join(lines)
 

@@ -1,11 +1,16 @@
 #include "costa/heartbeat_producer.hpp"
 
 #include "costa/cob_ids.hpp"
+#include "costa/od/little_endian.hpp"
 
 namespace costa {
 
 void HeartbeatProducer::restart(Microseconds now) noexcept {
-  period_ = millisecondsToMicroseconds(dictionary_.readUnsigned(kIndex, 0, 0));
+  restartWith(now, dictionary_.readUnsigned(kIndex, 0, 0));
+}
+
+void HeartbeatProducer::restartWith(Microseconds now, uint64_t periodMs) noexcept {
+  period_ = millisecondsToMicroseconds(periodMs);
   next_ = period_ == 0U ? kNever : now + period_;
   clock_.schedule(next_);
 }
@@ -29,7 +34,7 @@ AbortCode HeartbeatProducer::write(od::ObjectDictionary& dictionary, const od::E
                                    const uint8_t* data, size_t length) noexcept {
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
-    restart(clock_.now);
+    restartWith(clock_.now, loadLittleEndian(data, length));  // the value just written
   }
   return written;
 }

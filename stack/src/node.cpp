@@ -14,7 +14,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
             memory.emcyConditionCapacity, memory.emcyQueue, memory.emcyQueueCapacity),
       pdoContext_{access_,    tx_,    settings_.profile.pdo,       emcy_,
                   listeners_, clock_, settings_.staticPdoMappings, router_},
-      sdo_(access_, tx_, settings_.profile.sdo, memory.sdoBuffer, memory.sdoBufferSize,
+      sdo_(access_, tx_, settings_.profile.sdo, clock_, memory.sdoBuffer, memory.sdoBufferSize,
            settings_.sdoTimeout),
       heartbeat_(dictionary_, tx_, clock_),
       sync_(dictionary_, tx_, emcy_, clock_, router_),

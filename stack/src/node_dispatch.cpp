@@ -52,12 +52,7 @@ COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame
       return true;
     }
     case Route::kSdo: {
-      if (!preOrOperational()) {
-        return false;
-      }
-      const bool used = sdo_.onRequest(frame, clock_.now);
-      clock_.schedule(sdo_.nextDeadline());
-      return used;
+      return preOrOperational() && sdo_.onRequest(frame, clock_.now);
     }
     case Route::kRpdo:
       return !frame.rtr && nmt_.state() == NmtState::kOperational &&

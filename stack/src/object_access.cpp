@@ -4,41 +4,13 @@
 
 namespace costa {
 
-AbortCode ObjectAccess::prepareRead(uint16_t index, uint8_t subIndex, const ReadRequest& request,
-                                    od::EntryRef* out) noexcept {
-  const AbortCode found = dictionary_.find(index, subIndex, out);
-  if (found != AbortCode::kNone) {
-    return found;
-  }
-  if (!out->has(od::kReadable)) {
-    return AbortCode::kReadOfWriteOnly;
-  }
-  ObjectHook* hook = hookOf(index);
-  return hook == nullptr ? AbortCode::kNone : hook->prepareRead(dictionary_, *out, request);
-}
-
-AbortCode ObjectAccess::locateForWrite(uint16_t index, uint8_t subIndex,
-                                       od::EntryRef* out) const noexcept {
-  const AbortCode found = dictionary_.find(index, subIndex, out);
-  if (found != AbortCode::kNone) {
-    return found;
-  }
-  if (!out->has(od::kWritable)) {
-    return AbortCode::kWriteOfReadOnly;
-  }
-  return AbortCode::kNone;
-}
-
 AbortCode ObjectAccess::check(const od::EntryRef& ref, const uint8_t* data,
                               size_t length) noexcept {
   return hookFor(ref).check(dictionary_, ref, data, length);
 }
 
-AbortCode ObjectAccess::write(const od::EntryRef& ref, const uint8_t* data,
-                              size_t length) noexcept {
-  if (observer_ == nullptr) {
-    return hookFor(ref).write(dictionary_, ref, data, length);
-  }
+AbortCode ObjectAccess::writeObserved(const od::EntryRef& ref, const uint8_t* data,
+                                      size_t length) noexcept {
   // Small values are compared before and after, so that the observer can skip unchanged ones.
   uint8_t before[8] = {};
   const uint8_t* current = dictionary_.address(ref);

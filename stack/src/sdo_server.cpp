@@ -39,8 +39,10 @@ size_t unspecifiedExpeditedLength(const od::EntryRef& ref, const uint8_t* data) 
 }  // namespace
 
 SdoServer::SdoServer(ObjectAccess& access, TransmitPath& tx, const SdoProfile& profile,
-                     uint8_t* buffer, size_t bufferSize, Microseconds timeout) noexcept
+                     NodeClock& clock, uint8_t* buffer, size_t bufferSize,
+                     Microseconds timeout) noexcept
     : access_(access),
+      clock_(clock),
       channel_(tx, profile.distinguishHighAndLowValues),
       profile_(profile),
       reader_(access, buffer, bufferSize),
@@ -111,6 +113,85 @@ bool SdoServer::isClientAbort(const uint8_t* request) const noexcept {
                                          : (request[0] >> 5U) == kCcsAbort;
 }
 
+COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
+                                                  Microseconds now) noexcept {
+  index_ = loadU16(request + 1);
+  subIndex_ = request[3];
+  const AbortCode located = access_.locateForWrite(index_, subIndex_, &ref_);
+  if (located != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, located);
+    return;
+  }
+  const bool expedited = (request[0] & 0x02U) != 0U;
+  const bool sizeIndicated = (request[0] & 0x01U) != 0U;
+  if (expedited) {
+    const size_t length = sizeIndicated ? 4U - ((request[0] >> 2U) & 0x03U)
+                                        : unspecifiedExpeditedLength(ref_, request + 4);
+    const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
+    if (written != AbortCode::kNone) {
+      sendAbort(index_, subIndex_, written);
+      return;
+    }
+    CanFrame response;
+    channel_.address(response);
+    response.data[0] = kScsInitiateDownloadResponse;
+    response.data[1] = request[1];
+    response.data[2] = request[2];
+    response.data[3] = subIndex_;
+    channel_.send(response);
+    return;
+  }
+  const AbortCode begun =
+      writer_.begin(ref_, sizeIndicated ? loadU32(request + 4) : kSizeNotIndicated);
+  if (begun != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, begun);
+    return;
+  }
+  state_ = State::kDownloadSegments;
+  toggle_ = 0;
+  deadline_ = now + timeout_;
+  const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
+  respond(response);
+}
+
+COSTA_HOT_INLINE void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcept {
+  index_ = loadU16(request + 1);
+  subIndex_ = request[3];
+  ReadRequest details;
+  copyBytes(details.requestData, request + 4, 4);
+  const AbortCode prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
+  if (prepared != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, prepared);
+    return;
+  }
+  if (od::isNumeric(ref_.type()) && ref_.size() <= 4U) {
+    answerExpedited(request);  // the usual read: straight from the dictionary into the answer
+    return;
+  }
+  size_t size = 0;
+  const AbortCode begun = reader_.begin(ref_, &size);
+  if (begun != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, begun);
+    return;
+  }
+  answerUpload(request, size, now);
+}
+
+COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcept {
+  const size_t size = ref_.size();
+  CanFrame response;
+  channel_.address(response);
+  response.data[0] =
+      profile_.expeditedUpload == ExpeditedUploadFormat::kSizeIndicated
+          ? static_cast<uint8_t>(kScsInitiateUploadResponse | ((4U - size) << 2U) | 0x03U)
+          : static_cast<uint8_t>(kScsInitiateUploadResponse | 0x02U);
+  response.data[1] = request[1];
+  response.data[2] = request[2];
+  response.data[3] = subIndex_;
+  access_.dictionary().readNumber(ref_, response.data + 4);
+  channel_.send(response);
+}
+
 bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
   if (frame.dlc != 8U || frame.rtr) {
     return false;
@@ -123,7 +204,15 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
     return true;
   }
   switch (state_) {
-    case State::kIdle: initiate(request, ccs, now); break;
+    case State::kIdle:
+      if (ccs == kCcsInitiateUpload) {
+        initiateUpload(request, now);
+      } else if (ccs == kCcsInitiateDownload) {
+        initiateDownload(request, now);
+      } else {
+        initiate(request, ccs, now);
+      }
+      break;
     case State::kDownloadSegments:
       if (ccs == kCcsDownloadSegment) {
         downloadSegment(request, now);
@@ -145,6 +234,9 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
       }
       break;
   }
+  if (state_ != State::kIdle) {
+    clock_.schedule(nextDeadline());  // a transfer runs: its timeout (or a burst) is due
+  }
   return true;
 }
 
@@ -159,50 +251,11 @@ void SdoServer::initiate(const uint8_t* request, uint8_t ccs, Microseconds now) 
       return;
     }
   }  // without block transfers, their requests are unknown command specifiers (below)
-  if (ccs == kCcsInitiateDownload) {
-    initiateDownload(request, now);
-  } else if (ccs == kCcsInitiateUpload) {
-    initiateUpload(request, now);
-  } else if (ccs == kCcsDownloadSegment || ccs == kCcsUploadSegment) {
+  if (ccs == kCcsDownloadSegment || ccs == kCcsUploadSegment) {
     sendAbort(0, 0, AbortCode::kCommandSpecifier);  // no transfer to continue
   } else {
     sendAbort(loadU16(request + 1), request[3], AbortCode::kCommandSpecifier);
   }
-}
-
-void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexcept {
-  index_ = loadU16(request + 1);
-  subIndex_ = request[3];
-  const AbortCode located = access_.locateForWrite(index_, subIndex_, &ref_);
-  if (located != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, located);
-    return;
-  }
-  const bool expedited = (request[0] & 0x02U) != 0U;
-  const bool sizeIndicated = (request[0] & 0x01U) != 0U;
-  if (expedited) {
-    const size_t length = sizeIndicated ? 4U - ((request[0] >> 2U) & 0x03U)
-                                        : unspecifiedExpeditedLength(ref_, request + 4);
-    const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
-    if (written != AbortCode::kNone) {
-      sendAbort(index_, subIndex_, written);
-      return;
-    }
-    const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
-    respond(response);
-    return;
-  }
-  const AbortCode begun =
-      writer_.begin(ref_, sizeIndicated ? loadU32(request + 4) : kSizeNotIndicated);
-  if (begun != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, begun);
-    return;
-  }
-  state_ = State::kDownloadSegments;
-  toggle_ = 0;
-  deadline_ = now + timeout_;
-  const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
-  respond(response);
 }
 
 void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexcept {
@@ -236,25 +289,6 @@ void SdoServer::finishDownload() noexcept {
   const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | (toggle_ << 4U))};
   respond(response);
   endTransfer(AbortCode::kNone);
-}
-
-void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcept {
-  index_ = loadU16(request + 1);
-  subIndex_ = request[3];
-  ReadRequest details;
-  copyBytes(details.requestData, request + 4, 4);
-  const AbortCode prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
-  if (prepared != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, prepared);
-    return;
-  }
-  size_t size = 0;
-  const AbortCode begun = reader_.begin(ref_, &size);
-  if (begun != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, begun);
-    return;
-  }
-  answerUpload(request, size, now);
 }
 
 // The initiate upload response, expedited or segmented, for a value the reader has begun.

@@ -23,11 +23,8 @@ AbortCode checkIndicatedSize(const od::EntryRef& ref, size_t size, size_t buffer
 
 }  // namespace
 
-AbortCode SdoValueWriter::writeWhole(const od::EntryRef& ref, const uint8_t* data,
-                                     size_t length) noexcept {
-  if (!sdoStreams(ref, bufferSize_)) {
-    return access_.write(ref, data, length);
-  }
+AbortCode SdoValueWriter::writeStreamWhole(const od::EntryRef& ref, const uint8_t* data,
+                                           size_t length) noexcept {
   const AbortCode written = access_.writeStream(ref, 0, data, length, true, length);
   if (written != AbortCode::kNone) {
     access_.abortWriteStream(ref, written);

@@ -150,7 +150,7 @@ class ExampleOutputTest(unittest.TestCase):
         self.assertIn("const costa::od::Definition kDefinition = {\n    kObjects,\n    31,\n"
                       "    &kConstants,\n    &kDefaults,\n    sizeof(Values),\n"
                       f"    0x{layout:08X}U,\n    \"Costa example device\",\n    kLimits,\n"
-                      "    &costa::od::checkRealLimits,\n};", self.cpp)
+                      "    &costa::od::checkRealLimits,\n    kObjectSlots,\n    6,\n};", self.cpp)
 
     def test_size_checks(self):
         self.assertIn('static_assert(sizeof(Values::x2003_serial_text) == 21, '
@@ -220,7 +220,8 @@ class SmallOutputTest(unittest.TestCase):
         self.assertIn("kHeartbeatConsumers = 0;", header)
         self.assertIn("kErrorHistory = 0;", header)
         self.assertNotIn("kLimits", result.files["test_od.cpp"])
-        self.assertIn("    nullptr,\n    nullptr,\n};", result.files["test_od.cpp"])
+        self.assertIn("    nullptr,\n    nullptr,\n    kObjectSlots,\n    3,\n};",
+                      result.files["test_od.cpp"])
 
     def test_literal_helpers(self):
         self.assertEqual(c_string(b'a"b\\c?\n\x01\xe9'), '"a\\"b\\\\c\\?\\012\\001\\351"')

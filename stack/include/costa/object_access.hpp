@@ -53,15 +53,38 @@ class ObjectAccess {
   /// Locates an entry for reading: kNoObject, kNoSubIndex, kReadOfWriteOnly, or the hook's
   /// refusal. On success the value may be read from the dictionary.
   AbortCode prepareRead(uint16_t index, uint8_t subIndex, const ReadRequest& request,
-                        od::EntryRef* out) noexcept;
+                        od::EntryRef* out) noexcept {
+    const AbortCode found = dictionary_.find(index, subIndex, out);
+    if (found != AbortCode::kNone) {
+      return found;
+    }
+    if (!out->has(od::kReadable)) {
+      return AbortCode::kReadOfWriteOnly;
+    }
+    ObjectHook* hook = hookOf(index);
+    return hook == nullptr ? AbortCode::kNone : hook->prepareRead(dictionary_, *out, request);
+  }
 
   /// Locates an entry for writing: kNoObject, kNoSubIndex, kWriteOfReadOnly.
-  AbortCode locateForWrite(uint16_t index, uint8_t subIndex, od::EntryRef* out) const noexcept;
+  AbortCode locateForWrite(uint16_t index, uint8_t subIndex, od::EntryRef* out) const noexcept {
+    const AbortCode found = dictionary_.find(index, subIndex, out);
+    if (found != AbortCode::kNone) {
+      return found;
+    }
+    return out->has(od::kWritable) ? AbortCode::kNone : AbortCode::kWriteOfReadOnly;
+  }
 
   /// Checks a value as a write of a located entry would, without writing (ObjectHook::check).
   AbortCode check(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
   /// Writes a located entry through its hook (or the plain dictionary).
-  AbortCode write(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
+  AbortCode write(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept {
+    if (observer_ != nullptr) {
+      return writeObserved(ref, data, length);
+    }
+    ObjectHook* hook = hookOf(ref.index());
+    return hook != nullptr ? hook->write(dictionary_, ref, data, length)
+                           : dictionary_.write(ref, data, length);
+  }
 
   /// The streaming functions of the entry's hook (ObjectHook::readStream, writeStream,
   /// abortWriteStream), or their plain defaults when no hook covers the entry.
@@ -78,6 +101,8 @@ class ObjectAccess {
  private:
   /// The behaviour of an entry no hook covers.
   class PlainHook final : public ObjectHook {};
+
+  AbortCode writeObserved(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
 
   ObjectHook& hookFor(const od::EntryRef& ref) noexcept {
     ObjectHook* hook = hookOf(ref.index());

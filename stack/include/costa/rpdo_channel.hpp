@@ -51,7 +51,7 @@ class RpdoChannel {
   /// PDO of the right length). Types 0..240 hold the data until the next SYNC; 254/255 apply it
   /// at once. False when an entry was refused (nothing written).
   COSTA_HOT_INLINE bool onFrame(PdoContext& context, const CanFrame& frame,
-                                      Microseconds now) noexcept {
+                                Microseconds now) noexcept {
     if (frame.dlc != quietDlc_ && !checkLength(context, frame.dlc)) {
       return true;
     }

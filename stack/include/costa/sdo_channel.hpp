@@ -22,11 +22,16 @@ class SdoChannel {
 
   void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
 
-  /// Queues one 8-byte response.
-  void send(const uint8_t (&data)[8]) noexcept {
-    CanFrame frame;
+  /// Makes `frame` (as constructed: all zero) an 8-byte response on 0x580 + node-id.
+  void address(CanFrame& frame) const noexcept {
     frame.id = cob::kSdoTxBase + nodeId_;
     frame.dlc = 8;
+  }
+  void send(const CanFrame& frame) noexcept { tx_.send(frame); }
+  /// Sends one 8-byte response.
+  void send(const uint8_t (&data)[8]) noexcept {
+    CanFrame frame;
+    address(frame);
     copyBytes(frame.data, data, 8);
     tx_.send(frame);
   }

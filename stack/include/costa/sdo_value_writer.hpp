@@ -5,8 +5,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/hot_path.hpp"
 #include "costa/object_access.hpp"
 #include "costa/object_hook.hpp"
+#include "costa/sdo_streaming.hpp"
 
 namespace costa {
 
@@ -20,7 +22,13 @@ class SdoValueWriter {
       : access_(access), buffer_(buffer), bufferSize_(bufferSize) {}
 
   /// Writes a value that arrived in one piece (expedited download).
-  AbortCode writeWhole(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
+  COSTA_HOT_INLINE AbortCode writeWhole(const od::EntryRef& ref, const uint8_t* data,
+                                        size_t length) noexcept {
+    if (!sdoStreams(ref, bufferSize_)) {
+      return access_.write(ref, data, length);
+    }
+    return writeStreamWhole(ref, data, length);
+  }
 
   /// Starts a segmented or block download of `ref` with `indicatedSize` bytes (or
   /// kSizeNotIndicated): refuses a size the entry or the buffer cannot take, or lets a streaming
@@ -47,6 +55,7 @@ class SdoValueWriter {
 
  private:
   AbortCode flush(bool last) noexcept;
+  AbortCode writeStreamWhole(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
 
   ObjectAccess& access_;
   uint8_t* buffer_;

@@ -23,32 +23,31 @@ class ServiceObjects {
     ObjectHook* pdos;       ///< 0x1400..0x1BFF
   };
 
-  explicit ServiceObjects(const Hooks& hooks) noexcept : hooks_(hooks) {}
+  explicit ServiceObjects(const Hooks& hooks) noexcept
+      : hooks_{{nullptr, hooks.emcy, hooks.sync, hooks.guarding, hooks.store, hooks.consumer,
+                hooks.heartbeat},
+               hooks.pdos} {}
 
-  /// The hook of the service that owns `index`, or null.
+  /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x101F.
   ObjectHook* find(uint16_t index) const noexcept {
-    if (index >= 0x1400U && index <= 0x1BFFU) {
+    if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
       return hooks_.pdos;
     }
-    switch (index) {
-      case 0x1003:
-      case 0x1014: return hooks_.emcy;
-      case 0x1005:
-      case 0x1006:
-      case 0x1007:
-      case 0x1019: return hooks_.sync;
-      case 0x100C:
-      case 0x100D: return hooks_.guarding;
-      case 0x1010:
-      case 0x1011: return hooks_.store;
-      case 0x1016: return hooks_.consumer;
-      case 0x1017: return hooks_.heartbeat;
-      default: return nullptr;
-    }
+    const uint32_t offset = index - 0x1000U;
+    return offset < sizeof(kOwners) ? hooks_.of[kOwners[offset]] : nullptr;
   }
 
  private:
-  Hooks hooks_;
+  /// Which service owns 0x1000 + n: 0 none, else a position in Table::of.
+  static constexpr uint8_t kOwners[0x20] = {
+      0, 0, 0, 1, 0, 2, 2, 2, 0, 0, 0, 0, 3, 3, 0, 0,  // 0x1003 EMCY; 0x1005-7 SYNC; 0x100C/D
+      4, 4, 0, 0, 1, 0, 5, 6, 0, 2, 0, 0, 0, 0, 0, 0,  // 0x1010/1 store; 0x1014; 0x1016/7; 0x1019
+  };
+  struct Table {
+    ObjectHook* of[7];  ///< [0] null, then emcy, sync, guarding, store, consumer, heartbeat
+    ObjectHook* pdos;
+  };
+  Table hooks_;
 };
 
 }  // namespace costa

@@ -75,7 +75,7 @@ class SyncService : public ObjectHook {
   Microseconds period_ = 0;
   Microseconds window_ = 0;
   uint8_t overflow_ = 0;
-  uint8_t counter_ = 0;  ///< producer's next counter value
+  uint8_t counter_ = 0;       ///< producer's next counter value
   bool lengthError_ = false;  ///< EMCY 0x8240 raised
   Microseconds next_ = kNever;
 };

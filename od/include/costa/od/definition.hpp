@@ -90,7 +90,19 @@ struct Definition {
   const char* deviceName;     ///< Name of the device description the tables were generated from.
   const Limits* limits;       ///< Rows named by SubEntry::limits (null when none has limits).
   RealLimitCheck realLimits;  ///< Null unless a REAL entry has limits.
+  /// Open-addressed hash table of the objects: 2^objectSlotBits entries, each 0 (empty) or
+  /// 1 + the object's position in `objects`; see objectSlotOf(). Null: lookups search the
+  /// sorted `objects` instead (a definition made by hand).
+  const uint16_t* objectSlots;
+  uint8_t objectSlotBits;
 };
+
+/// The first slot of the object hash table to look at for `index`: Fibonacci hashing of the
+/// 16-bit index; collisions go on to the next slot (linear probing). The generator builds the
+/// table with this very function.
+constexpr uint32_t objectSlotOf(uint16_t index, uint8_t bits) noexcept {
+  return ((static_cast<uint32_t>(index) * 40503U) & 0xFFFFU) >> (16U - bits);
+}
 
 /// Number of sub-indices an object has (sub-index 0 included).
 constexpr unsigned entryCount(const Object& object) noexcept {

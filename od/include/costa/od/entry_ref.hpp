@@ -91,7 +91,15 @@ class Entries {
   const Definition& definition_;
 };
 
-/// The sub-index `sub` of `object`; an invalid ref when the object has none.
-EntryRef locate(const Object& object, uint8_t sub) noexcept;
+/// The sub-index `sub` of `object`; an invalid ref when the object has none. O(rows).
+inline EntryRef locate(const Object& object, uint8_t sub) noexcept {
+  for (uint8_t i = 0; i < object.rowCount; ++i) {
+    const SubEntry& row = object.rows[i];
+    if (sub >= row.subIndex && static_cast<unsigned>(sub - row.subIndex) < row.count) {
+      return EntryRef{&object, &row, sub};
+    }
+  }
+  return EntryRef{};
+}
 
 }  // namespace costa::od

@@ -17,8 +17,30 @@ inline void storeLittleEndian(uint8_t* destination, uint64_t value, size_t lengt
   }
 }
 
-/// Reads `length` bytes, least significant first, zero-extended. `length` <= 8.
+/// Reads `length` bytes, least significant first, zero-extended. `length` <= 8. The sizes of
+/// numbers are one load on a little-endian CPU.
 inline uint64_t loadLittleEndian(const uint8_t* source, size_t length) noexcept {
+  if (kLittleEndianHost) {
+    switch (length) {
+      case 1: return *source;
+      case 2: {
+        uint16_t v = 0;
+        __builtin_memcpy(&v, source, 2);
+        return v;
+      }
+      case 4: {
+        uint32_t v = 0;
+        __builtin_memcpy(&v, source, 4);
+        return v;
+      }
+      case 8: {
+        uint64_t v = 0;
+        __builtin_memcpy(&v, source, 8);
+        return v;
+      }
+      default: break;
+    }
+  }
   uint64_t value = 0;
   for (size_t i = 0; i < length; ++i) {
     value |= static_cast<uint64_t>(source[i]) << (8U * i);

@@ -5,8 +5,10 @@
 #include <stdint.h>
 
 #include "costa/od/abort_code.hpp"
+#include "costa/od/bytes.hpp"
 #include "costa/od/definition.hpp"
 #include "costa/od/entry_ref.hpp"
+#include "costa/od/little_endian.hpp"
 
 namespace costa::od {
 
@@ -45,14 +47,44 @@ class ObjectDictionary {
   size_t read(const EntryRef& ref, size_t offset, uint8_t* destination,
               size_t capacity) const noexcept;
 
+  /// The wire representation of a numeric value (ref.size() bytes) into `destination`. The
+  /// usual case (a value of 1, 2 or 4 bytes in RAM on a little-endian CPU) is one load and
+  /// store.
+  void readNumber(const EntryRef& ref, uint8_t* destination) const noexcept {
+    const uint8_t* source = values_ + ref.offset();
+    if (kLittleEndianHost && !ref.inRom()) {
+      switch (ref.size()) {
+        case 1: *destination = *source; return;
+        case 2: copyBytes(destination, source, 2); return;
+        case 4: copyBytes(destination, source, 4); return;
+        default: break;
+      }
+    }
+    read(ref, 0, destination, ref.size());
+  }
+
   /// Checks a new value in wire representation without storing it: length (kLengthTooHigh,
   /// kLengthTooLow), BOOLEAN range (kInvalidValue), limits (kValueTooHigh, kValueTooLow).
   /// ROM entries and DOMAINs fail with kWriteOfReadOnly / kCannotStore.
   AbortCode check(const EntryRef& ref, const uint8_t* source, size_t length) const noexcept;
 
   /// check() and, when it passes, stores the value. A VISIBLE_STRING shorter than its
-  /// capacity is padded with zeros.
-  AbortCode write(const EntryRef& ref, const uint8_t* source, size_t length) noexcept;
+  /// capacity is padded with zeros. The usual write (a whole integer of 1, 2 or 4 bytes
+  /// without limits, in RAM, on a little-endian CPU) is a test and a copy.
+  AbortCode write(const EntryRef& ref, const uint8_t* source, size_t length) noexcept {
+    const SubEntry& row = *ref.row;
+    if (kLittleEndianHost && length == row.size && row.limits == 0U &&
+        (row.attributes & kInRom) == 0U && isInteger(row.type)) {
+      uint8_t* target = values_ + ref.offset();
+      switch (length) {
+        case 1: *target = *source; return AbortCode::kNone;
+        case 2: copyBytes(target, source, 2); return AbortCode::kNone;
+        case 4: copyBytes(target, source, 4); return AbortCode::kNone;
+        default: break;
+      }
+    }
+    return writeChecked(ref, source, length);
+  }
 
   /// Numeric value of an integer or boolean entry, widened (signed types sign-extended).
   /// Returns 0 for other types.
@@ -85,6 +117,7 @@ class ObjectDictionary {
   template <typename Wanted>
   void restoreRows(const Object& object, Wanted wanted) noexcept;
   void restoreRow(const SubEntry& row) noexcept;
+  AbortCode writeChecked(const EntryRef& ref, const uint8_t* source, size_t length) noexcept;
 
   const Definition* definition_;
   uint8_t* values_;
