@@ -211,7 +211,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
             for k, entry in enumerate(row[1:], start=1):
                 actual = layout.offsets[(entry.index, entry.sub)]
                 if not actual.startswith(layout.offsets[key]):  # not an item of one array
-                    run_checks.append((actual, f"{layout.offsets[key]} + {k} * {first.size}",
+                    run_checks.append((actual, f"{layout.offsets[key]} + {k * first.size}U",
                                        f"0x{entry.index:04X}:{entry.sub}"))
         lines += ["};", ""]
     lines.append("constexpr costa::od::Object kObjects[] = {")

@@ -196,8 +196,8 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
     if (ref.subIndex() != 0U || length < 1U || data[0] != 0U) {
       return AbortCode::kInvalidValue;
     }
-    for (uint8_t sub = 1; sub < od::entryCount(*ref.object); ++sub) {
-      dictionary.storeUnsigned(kErrorHistoryIndex, sub, 0);
+    for (unsigned sub = 1; sub < od::entryCount(*ref.object); ++sub) {
+      dictionary.storeUnsigned(kErrorHistoryIndex, static_cast<uint8_t>(sub), 0);
     }
     dictionary.storeUnsigned(kErrorHistoryIndex, 0, 0);
     return AbortCode::kNone;

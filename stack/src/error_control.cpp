@@ -25,12 +25,11 @@ void ErrorControl::reset(uint8_t nodeId) noexcept {
 }
 
 bool ErrorControl::onFrame(const CanFrame& frame, uint8_t nodeId) noexcept {
-  const auto from = static_cast<uint8_t>(frame.id - cob::kErrorControlBase);
   if (frame.rtr) {
     if (!features::kNodeGuarding || !profile_.nodeGuarding) {
       return false;  // a node without node guarding does not answer remote requests
     }
-    if (from == nodeId &&
+    if (frame.id == cob::kErrorControlBase + nodeId &&
         guarding_.onRequest(nmt_.state(), clock_.now) == NodeGuarding::Event::kResumed) {
       if (profile_.emcyForErrors) {
         emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
@@ -42,7 +41,8 @@ bool ErrorControl::onFrame(const CanFrame& frame, uint8_t nodeId) noexcept {
   if constexpr (!features::kHeartbeatConsumer) {
     return false;  // nobody here listens to heartbeats
   }
-  if (frame.dlc == 1U && from != nodeId) {
+  if (frame.dlc == 1U && frame.id != cob::kErrorControlBase + nodeId) {
+    const auto from = static_cast<uint8_t>(frame.id - cob::kErrorControlBase);
     onHeartbeatEvent(consumer_.onHeartbeat(from, frame.data[0], clock_.now));
     clock_.schedule(consumer_.nextDeadline());
   }

@@ -15,7 +15,7 @@ void HeartbeatConsumer::configure(bool reset) noexcept {
   if (object == nullptr) {
     return;
   }
-  for (uint8_t i = 0; i + 1U < od::entryCount(*object) && count_ < capacity_; ++i) {
+  for (unsigned i = 0; i + 1U < od::entryCount(*object) && count_ < capacity_; ++i) {
     const auto value =
         static_cast<uint32_t>(dictionary_.readUnsigned(kIndex, static_cast<uint8_t>(i + 1U), 0));
     const auto nodeId = static_cast<uint8_t>(value >> 16U);
@@ -85,11 +85,12 @@ AbortCode HeartbeatConsumer::write(od::ObjectDictionary& dictionary, const od::E
       return AbortCode::kInvalidValue;
     }
     if (nodeId != 0U && (value & 0xFFFFU) != 0U) {
-      for (uint8_t sub = 1; sub < od::entryCount(*ref.object); ++sub) {
+      for (unsigned sub = 1; sub < od::entryCount(*ref.object); ++sub) {
         if (sub == ref.subIndex()) {
           continue;
         }
-        const auto other = static_cast<uint32_t>(dictionary.readUnsigned(kIndex, sub, 0));
+        const auto other =
+            static_cast<uint32_t>(dictionary.readUnsigned(kIndex, static_cast<uint8_t>(sub), 0));
         if ((other >> 16U) == nodeId && (other & 0xFFFFU) != 0U) {
           return AbortCode::kParameterIncompatible;
         }

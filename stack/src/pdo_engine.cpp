@@ -1,5 +1,7 @@
 #include "costa/pdo_engine.hpp"
 
+#include <type_traits>
+
 #include "costa/frame_router.hpp"
 #include "costa/od/little_endian.hpp"
 
@@ -169,22 +171,15 @@ TpdoChannel* PdoEngine::findTpdo(uint16_t communicationIndex) noexcept {
   return nullptr;
 }
 
-AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
-                           const uint8_t* data, size_t length) noexcept {
-  const uint16_t index = ref.index();
-  const bool receive = index < kTpdoCommunicationFirst;
-  const bool mapping = (index >= 0x1600U && index <= 0x17FFU) || index >= 0x1A00U;
-  const auto communicationIndex = static_cast<uint16_t>(mapping ? index - kMappingOffset : index);
-  RpdoChannel* rpdo = receive ? findRpdo(communicationIndex) : nullptr;
-  TpdoChannel* tpdo = receive ? nullptr : findTpdo(communicationIndex);
-  if (rpdo == nullptr && tpdo == nullptr) {
-    return dictionary.write(ref, data, length);
-  }
-  const bool valid = rpdo != nullptr ? rpdo->valid() : tpdo->valid();
-  const uint32_t canId = rpdo != nullptr ? rpdo->canId() : tpdo->canId();
+template <typename Channel>
+AbortCode PdoEngine::writeParameter(Channel& channel, bool mapping,
+                                    od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                                    const uint8_t* data, size_t length) noexcept {
+  constexpr bool kReceive = std::is_same_v<Channel, RpdoChannel>;
   const AbortCode verdict =
-      mapping ? checkMappingWrite(receive, valid, ref, data, length)
-              : checkCommunicationWrite(receive, valid, canId, ref.subIndex(), data, length);
+      mapping ? checkMappingWrite(kReceive, channel.valid(), ref, data, length)
+              : checkCommunicationWrite(kReceive, channel.valid(), channel.canId(), ref.subIndex(),
+                                        data, length);
   if (verdict != AbortCode::kNone) {
     return verdict;
   }
@@ -192,17 +187,31 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   if (written != AbortCode::kNone) {
     return written;
   }
-  const bool resolved = rpdo != nullptr ? rpdo->configure(context_) : tpdo->configure(context_);
-  if (!resolved) {
+  if (!channel.configure(context_)) {
     ++unresolvableMappings_;
   }
-  if (tpdo != nullptr) {
+  if constexpr (!kReceive) {
     if (running_) {
-      tpdo->start(context_, context_.clock.now, false);
+      channel.start(context_, context_.clock.now, false);
     }
   }
   context_.routes.invalidate();
   return AbortCode::kNone;
+}
+
+AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                           const uint8_t* data, size_t length) noexcept {
+  const uint16_t index = ref.index();
+  const bool mapping = (index >= 0x1600U && index <= 0x17FFU) || index >= 0x1A00U;
+  const auto communicationIndex = static_cast<uint16_t>(mapping ? index - kMappingOffset : index);
+  if (index < kTpdoCommunicationFirst) {
+    RpdoChannel* rpdo = findRpdo(communicationIndex);
+    return rpdo != nullptr ? writeParameter(*rpdo, mapping, dictionary, ref, data, length)
+                           : dictionary.write(ref, data, length);
+  }
+  TpdoChannel* tpdo = findTpdo(communicationIndex);
+  return tpdo != nullptr ? writeParameter(*tpdo, mapping, dictionary, ref, data, length)
+                         : dictionary.write(ref, data, length);
 }
 
 }  // namespace costa

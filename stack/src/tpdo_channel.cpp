@@ -136,7 +136,7 @@ void TpdoChannel::restartTimers(PdoContext& context, Microseconds now) noexcept 
   if (!eventDriven()) {
     return;  // the inhibit time and the event timer are those of event-driven transmission
   }
-  inhibitUntil_ = now + Microseconds{inhibit_} * kHundredMicroseconds;
+  inhibitUntil_ = now + static_cast<Microseconds>(inhibit_) * kHundredMicroseconds;
   if (eventTimerMs_ != 0U) {
     eventDeadline_ = now + millisecondsToMicroseconds(eventTimerMs_);
     context.clock.schedule(eventDeadline_);

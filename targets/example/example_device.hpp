@@ -60,7 +60,7 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   uint8_t scratchPad_[kScratchPadCapacity] = {};
   size_t scratchPadLength_ = 0;
   bool receiving_ = false;  ///< A download has started overwriting the scratch pad.
-  bool attached_ = false;
+  bool attached_;           ///< last: every other member is ready when the node gets the hooks
 };
 
 }  // namespace costa::example

@@ -46,7 +46,7 @@ class GefranDevice : public ObjectHook, public NodeEvents {
   bool autoStartPending_ = false;
   uint8_t storedFaults_ = 0;    ///< faults found in stored parameters since power-on
   uint8_t reportedFaults_ = 0;  ///< 0x4001 bits whose EMCY condition is raised
-  bool attached_ = false;
+  bool attached_;               ///< last: every other member is ready when the node gets the hooks
 };
 
 }  // namespace costa::gefran

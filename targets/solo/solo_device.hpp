@@ -62,7 +62,7 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   Microseconds identifyAt_ = kNever;
   FactoryResetHandler factoryReset_ = nullptr;
   void* factoryResetContext_ = nullptr;
-  bool attached_ = false;
+  bool attached_;  ///< last: every other member is ready when the node gets the hooks
 };
 
 }  // namespace costa::solo

@@ -90,7 +90,7 @@ class ExampleOutputTest(unittest.TestCase):
         self.assertIn(
             "static_assert(offsetof(Values, x1018_identity_object) + offsetof(Values::"
             "X1018IdentityObject, serial_number) == offsetof(Values, x1018_identity_object) + "
-            "offsetof(Values::X1018IdentityObject, vendor_id) + 3 * 4, \"0x1018:4 follows the "
+            "offsetof(Values::X1018IdentityObject, vendor_id) + 12U, \"0x1018:4 follows the "
             "value before it\");", self.cpp)
         # Array items: one row of three.
         self.assertIn(

@@ -106,7 +106,10 @@ class ObjectAccess {
 
   ObjectHook& hookFor(const od::EntryRef& ref) noexcept {
     ObjectHook* hook = hookOf(ref.index());
-    return hook != nullptr ? *hook : plain_;
+    if (hook == nullptr) {
+      hook = &plain_;
+    }
+    return *hook;
   }
 
   od::ObjectDictionary& dictionary_;

@@ -36,6 +36,9 @@ struct EntryRef {
 /// No allocation; the whole walk is O(number of sub-indices).
 class Entries {
  public:
+  /// Where the walk ends: past the last sub-index.
+  struct End {};
+
   class Iterator {
    public:
     Iterator(const Definition& definition, uint16_t object) noexcept
@@ -49,9 +52,8 @@ class Entries {
       settle();
       return *this;
     }
-    bool operator!=(const Iterator& other) const noexcept {
-      return object_ != other.object_ || row_ != other.row_ || step_ != other.step_;
-    }
+    /// The walk goes on while the iterator locates a sub-index.
+    bool operator!=(End /*end*/) const noexcept { return ref_.valid(); }
 
    private:
     /// Moves past rows and objects that are exhausted, then fills `ref_`.
@@ -84,8 +86,8 @@ class Entries {
   };
 
   explicit Entries(const Definition& definition) noexcept : definition_(definition) {}
-  Iterator begin() const noexcept { return Iterator(definition_, 0); }
-  Iterator end() const noexcept { return Iterator(definition_, definition_.objectCount); }
+  Iterator begin() const noexcept { return {definition_, 0}; }
+  static End end() noexcept { return {}; }
 
  private:
   const Definition& definition_;
