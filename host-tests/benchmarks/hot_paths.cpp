@@ -11,7 +11,7 @@ constexpr uint32_t kSdoResponse = 0x580U + Bench::kNodeId;
 constexpr CanFrame frame(uint32_t id, uint8_t dlc, uint8_t b0 = 0, uint8_t b1 = 0, uint8_t b2 = 0,
                          uint8_t b3 = 0, uint8_t b4 = 0, uint8_t b5 = 0, uint8_t b6 = 0,
                          uint8_t b7 = 0) noexcept {
-  return CanFrame{id, dlc, false, false, {b0, b1, b2, b3, b4, b5, b6, b7}};
+  return CanFrame{id, {b0, b1, b2, b3, b4, b5, b6, b7}, dlc, false, false};
 }
 
 /// Null when the frames sent since `firstFrame` are exactly `expected[0..count)`.

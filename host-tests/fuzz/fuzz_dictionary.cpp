@@ -9,6 +9,7 @@
 
 #include "costa/lss_protocol.hpp"
 #include "costa/od/entry_ref.hpp"
+#include "costa/od/object_dictionary.hpp"
 
 namespace costa::fuzz {
 namespace {
@@ -43,17 +44,18 @@ void token(std::string* out, std::initializer_list<uint8_t> bytes) {
 
 /// The default of a numeric RAM entry of up to 4 bytes (without the node-id of $NODEID).
 uint32_t defaultValue(const od::Definition& definition, const od::EntryRef& entry) {
+  uint8_t bytes[8] = {};
+  od::copyDefault(definition, entry, bytes);
   uint32_t value = 0;
-  const uint8_t* at = static_cast<const uint8_t*>(definition.defaults) + entry.offset();
   switch (entry.size()) {
-    case 1: value = *at; break;
+    case 1: value = bytes[0]; break;
     case 2: {
       uint16_t half = 0;
-      memcpy(&half, at, sizeof(half));
+      memcpy(&half, bytes, sizeof(half));
       value = half;
       break;
     }
-    case 4: memcpy(&value, at, sizeof(value)); break;
+    case 4: memcpy(&value, bytes, sizeof(value)); break;
     default: break;
   }
   return value;

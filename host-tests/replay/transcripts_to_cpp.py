@@ -191,9 +191,9 @@ def cpp_string(raw):
 def cpp_step(step):
     can_id, extended, rtr, dlc, data, wildcards = step.get(
         "frame", (0, False, False, 0, [0] * 8, 0))
-    frame = "{0x%X, %d, %s, %s, {%s}}" % (
-        can_id, dlc, "true" if rtr else "false", "true" if extended else "false",
-        ", ".join("0x%02X" % byte for byte in data))
+    frame = "{0x%X, {%s}, %d, %s, %s}" % (
+        can_id, ", ".join("0x%02X" % byte for byte in data), dlc, "true" if rtr else "false",
+        "true" if extended else "false")
     command = cpp_string(step["command"]) if "command" in step else "nullptr"
     return "    {%s, %d, 0x%02X, %s, %dU, %s}," % (
         STEP_KINDS[step["kind"]], step["line"], wildcards, frame, step.get("milliseconds", 0),

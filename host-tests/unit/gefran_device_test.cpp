@@ -40,10 +40,10 @@ TEST(GefranAngleModel, ReproducesTheManualsFrames) {
   uint8_t little[4] = {};
   gefran::packAngles(0x0A8C, 0x0384, false, big);
   gefran::packAngles(0x0A8C, 0x0384, true, little);
-  EXPECT_EQ(host::formatFrame(CanFrame{0x182, 4, false, false, {big[0], big[1], big[2], big[3]}}),
+  EXPECT_EQ(host::formatFrame(CanFrame{0x182, {big[0], big[1], big[2], big[3]}, 4, false, false}),
             "182 [4] 0A 8C 03 84");
   EXPECT_EQ(host::formatFrame(
-                CanFrame{0x182, 4, false, false, {little[0], little[1], little[2], little[3]}}),
+                CanFrame{0x182, {little[0], little[1], little[2], little[3]}, 4, false, false}),
             "182 [4] 8C 0A 84 03");
 }
 

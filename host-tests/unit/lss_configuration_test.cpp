@@ -160,7 +160,7 @@ TEST(LssSlaveDefaults, TheDefaultHostSupportsNoBitTimingCannotStoreAndNeverReset
   NoAllocationScope scope;
   slave.reset(kIdentity, 0xFF, 0xFF, LssBitTiming{});
   const auto request = [&](uint8_t cs, uint8_t byte1, uint8_t byte2) {
-    const CanFrame frame{0x7E5, 8, false, false, {cs, byte1, byte2}};
+    const CanFrame frame{0x7E5, {cs, byte1, byte2}, 8, false, false};
     return slave.onFrame(frame, 0);
   };
   EXPECT_TRUE(request(0x04, 0x01, 0x00));  // configuration state

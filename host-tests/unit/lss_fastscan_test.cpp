@@ -39,7 +39,7 @@ class SimulatedBus {
   /// Any other answer, or one that is not 0x7E4 [8] with the expected bytes, fails the test.
   int exchange(const uint8_t (&data)[8], uint8_t expectedCs, uint8_t expectedByte1 = 0) {
     ++requests_;
-    CanFrame frame{0x7E5, 8, false, false, {}};
+    CanFrame frame{0x7E5, {}, 8, false, false};
     for (size_t i = 0; i < 8; ++i) {
       frame.data[i] = data[i];
     }
@@ -52,7 +52,7 @@ class SimulatedBus {
       while (device->cursor < device->can.count()) {
         const CanFrame response = device->can.at(device->cursor++);
         ++device->framesSent;
-        const CanFrame expected{0x7E4, 8, false, false, {expectedCs, expectedByte1}};
+        const CanFrame expected{0x7E4, {expectedCs, expectedByte1}, 8, false, false};
         EXPECT_TRUE(sameOnWire(response, expected))
             << "device " << device->slave.identity().serialNumber << " answered cs "
             << int{response.data[0]} << " " << int{response.data[1]};

@@ -216,10 +216,10 @@ TEST_F(LssSlaveTest, ADataLengthCodeAbove8IsIgnored) {
 
 TEST_F(LssSlaveTest, RemoteFramesAreIgnoredWhateverTheirData) {
   enterConfiguration();
-  const CanFrame inquire{0x7E5, 8, true, false, {0x5E}};
+  const CanFrame inquire{0x7E5, {0x5E}, 8, true, false};
   bus_.send(inquire);
   EXPECT_FALSE(bus_.accepted());
-  const CanFrame toWaiting{0x7E5, 8, true, false, {0x04, 0x00}};
+  const CanFrame toWaiting{0x7E5, {0x04, 0x00}, 8, true, false};
   bus_.send(toWaiting);
   EXPECT_FALSE(bus_.accepted());
   EXPECT_TRUE(slave().configurationState());
@@ -259,7 +259,7 @@ TEST_F(LssSlaveTest, AFullTransmitQueueDropsTheResponseAndCountsIt) {
   enterConfiguration();
   bus_.can().setAccepting(false);  // the controller takes nothing: responses queue up
   for (size_t i = 0; i < LssBus::kQueueDepth + 2U; ++i) {
-    bus_.send(CanFrame{0x7E5, 8, false, false, {0x5E}});
+    bus_.send(CanFrame{0x7E5, {0x5E}, 8, false, false});
     EXPECT_TRUE(bus_.accepted());
   }
   EXPECT_EQ(bus_.tx().queued(), LssBus::kQueueDepth);

@@ -118,12 +118,12 @@ struct ManyGroupsTables {
       objects[i] =
           od::Object{static_cast<uint16_t>(0x2000U + i), od::ObjectCode::kVar, 1, &subs[i]};
     }
-    definition = od::Definition{objects,  kCount,  defaults, defaults, kCount, 0x1234U,
-                                "groups", nullptr, nullptr,  nullptr,  0};
+    definition = od::Definition{objects, kCount,   constants, nullptr, nullptr, 0, kCount,
+                                0x1234U, "groups", nullptr,   nullptr, nullptr, 0};
   }
   od::SubEntry subs[kCount]{};
   od::Object objects[kCount]{};
-  uint8_t defaults[kCount]{};
+  uint8_t constants[kCount]{};
   od::Definition definition{};
 };
 

@@ -34,9 +34,10 @@ TEST_F(SlaveCountersTest, DropsOfTheNodeAndErrorFramesOfTheSocket) {
   socket.errorFrames = 3;
   socket.refused = 7;  // retried by the node: not a loss
   const SlaveCounters counters = countersOf(bus_.node(), socket);
-  // 8 EMCY and 40 answers for the 32 frames of the transmit queue.
+  // 8 EMCY and 40 answers for the frames of the transmit queue.
+  static_assert(DefaultNodeCapacity::kTxQueueDepth == 8U, "the dropped count below");
   EXPECT_EQ(describeCounters(counters),
-            "tx dropped 16, tx expired 0, EMCY lost 2, error frames 3, rx overruns 1, bus-offs 1");
+            "tx dropped 40, tx expired 0, EMCY lost 2, error frames 3, rx overruns 1, bus-offs 1");
   SlaveCounters other = counters;
   other.errorFrames = 4;
   EXPECT_NE(counters, other);

@@ -159,7 +159,7 @@ INSTANTIATE_TEST_SUITE_P(All, TranscriptReplay,
 // Hand-written tables, as the generator would write them, for scripts the slave does not follow.
 constexpr CanFrame frame(uint32_t id, uint8_t dlc, uint8_t b0 = 0, uint8_t b1 = 0, uint8_t b2 = 0,
                          uint8_t b3 = 0, uint8_t b4 = 0, uint8_t b5 = 0) {
-  return CanFrame{id, dlc, false, false, {b0, b1, b2, b3, b4, b5, 0, 0}};
+  return CanFrame{id, {b0, b1, b2, b3, b4, b5, 0, 0}, dlc, false, false};
 }
 constexpr Step tx(uint32_t line, const CanFrame& expected, uint8_t wildcards = 0) {
   return Step{StepKind::kTransmit, line, wildcards, expected, 0, nullptr};

@@ -1,6 +1,7 @@
 """Writes the C++ text of a generated object dictionary: NAME_od.hpp, NAME_od.cpp and
 NAME_od_names.cpp. Pure functions of the model; the same model gives the same bytes."""
 
+import struct
 import zlib
 
 from cpp_layout import Block, Layout, plan_layout
@@ -118,6 +119,61 @@ def _initializer_text(block: Block, variable: str) -> list:
     return lines
 
 
+def default_bytes(entry: Entry) -> bytes:
+    """The little-endian bytes of an entry's default as its RAM value holds them (a string with
+    its terminating zeros, an octet string padded to its size)."""
+    kind, size = entry.data_type.kind, entry.size
+    if kind == "visible":
+        return entry.default + bytes(size + 1 - len(entry.default))
+    if kind == "octet":
+        return entry.default + bytes(size - len(entry.default))
+    if kind == "real":
+        return struct.pack("<f" if size == 4 else "<d", entry.default)
+    return (entry.default & ((1 << (8 * size)) - 1)).to_bytes(size, "little")
+
+
+def default_records(device: Device, layout: Layout) -> tuple:
+    """The non-zero defaults of the RAM block as od::DefaultValue rows, in the order of their
+    offsets, and the bytes of those longer than 4 bytes: ([(offset expression, size, value,
+    comment)], bytes)."""
+    records, blob = [], bytearray()
+    for entry in device.all_entries():
+        if entry.in_rom or not entry.has_storage:
+            continue
+        data = default_bytes(entry)
+        if not any(data):
+            continue
+        numeric = entry.data_type.kind in _MERGEABLE_KINDS and len(data) <= 4
+        if numeric:
+            value = int.from_bytes(data, "little")
+        else:
+            value = len(blob)
+            blob += data
+        records.append((layout.offsets[(entry.index, entry.sub)], len(data), value,
+                        f"0x{entry.index:04X}:{entry.sub}"))
+    return records, bytes(blob)
+
+
+def _defaults_text(device: Device, layout: Layout) -> list:
+    records, blob = default_records(device, layout)
+    lines = ["/// Every non-zero default of the RAM block (the rest is zero), by offset.",
+             "constexpr costa::od::DefaultValue kDefaults[] = {"]
+    for offset, size, value, label in records:
+        lines.append(f"{_INDENT * 2}{{{offset}, {size}, 0x{value:X}U}},  // {label}")
+    if not records:
+        lines.append(f"{_INDENT * 2}{{0, 0, 0}},  // none: keeps the array non-empty")
+    lines += ["};",
+              "static_assert(costa::od::sortedByOffset(kDefaults), "
+              "\"defaults in the order of their offsets\");"]
+    lines.append("constexpr uint8_t kDefaultBytes[] = {")
+    for start in range(0, len(blob), 16):
+        lines.append(_INDENT * 2 + ", ".join(f"0x{b:02X}" for b in blob[start:start + 16]) + ",")
+    if not blob:
+        lines.append(f"{_INDENT * 2}0,  // none: keeps the array non-empty")
+    lines += ["};", ""]
+    return lines, len(records)
+
+
 def _attributes_text(entry: Entry) -> str:
     return " | ".join(f"costa::od::{n}" for n in entry.attribute_names())
 
@@ -186,7 +242,8 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
     lines = [_banner(name, source).rstrip("\n"), f'#include "{name}_od.hpp"', "",
              "#include <stddef.h>", "", f"namespace costa::gen::{name} {{", "namespace {", ""]
     lines += _initializer_text(layout.constants, "kConstants") + [""]
-    lines += _initializer_text(layout.values, "kDefaults") + [""]
+    defaults, default_count = _defaults_text(device, layout)
+    lines += defaults
     limit_rows, row_of = _limits(device)
     if limit_rows:
         lines.append("constexpr costa::od::Limits kLimits[] = {")
@@ -240,7 +297,9 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
               f"{_INDENT * 2}kObjects,",
               f"{_INDENT * 2}{len(device.objects)},",
               f"{_INDENT * 2}&kConstants,",
-              f"{_INDENT * 2}&kDefaults,",
+              f"{_INDENT * 2}kDefaults,",
+              f"{_INDENT * 2}kDefaultBytes,",
+              f"{_INDENT * 2}{default_count if default_count else 0},",
               f"{_INDENT * 2}sizeof(Values),",
               f"{_INDENT * 2}0x{layout_id(device):08X}U,",
               f"{_INDENT * 2}{text_literal(device.product_name)},",

@@ -6,25 +6,13 @@
 namespace costa::od {
 namespace {
 
-// Native bytes of a numeric value, zero-extended to 64 bits (works on any byte order).
+// Native bytes of a numeric value in a value block, zero-extended to 64 bits (any byte order).
 uint64_t loadNative(const uint8_t* address, size_t size) noexcept {
   switch (size) {
     case 1: return *address;
-    case 2: {
-      uint16_t v = 0;
-      copyBytes(&v, address, 2);
-      return v;
-    }
-    case 4: {
-      uint32_t v = 0;
-      copyBytes(&v, address, 4);
-      return v;
-    }
-    case 8: {
-      uint64_t v = 0;
-      copyBytes(&v, address, 8);
-      return v;
-    }
+    case 2: return loadAligned<uint16_t>(address);
+    case 4: return loadAligned<uint32_t>(address);
+    case 8: return loadAligned<uint64_t>(address);
     default: return 0;
   }
 }
@@ -32,17 +20,9 @@ uint64_t loadNative(const uint8_t* address, size_t size) noexcept {
 void storeNative(uint8_t* address, uint64_t raw, size_t size) noexcept {
   switch (size) {
     case 1: *address = static_cast<uint8_t>(raw); break;
-    case 2: {
-      const auto v = static_cast<uint16_t>(raw);
-      copyBytes(address, &v, 2);
-      break;
-    }
-    case 4: {
-      const auto v = static_cast<uint32_t>(raw);
-      copyBytes(address, &v, 4);
-      break;
-    }
-    case 8: copyBytes(address, &raw, 8); break;
+    case 2: storeAligned(address, static_cast<uint16_t>(raw)); break;
+    case 4: storeAligned(address, static_cast<uint32_t>(raw)); break;
+    case 8: storeAligned(address, raw); break;
     default: break;
   }
 }
@@ -295,18 +275,69 @@ bool ObjectDictionary::storeUnsigned(uint16_t index, uint8_t subIndex, uint64_t 
   return true;
 }
 
+namespace {
+
+// Bytes a value of `row` takes in its block: a VISIBLE_STRING keeps a terminating zero.
+size_t storageBytes(const SubEntry& row) noexcept {
+  return row.type == DataType::kVisibleString ? row.size + 1U : row.size;
+}
+
+// The first default at or after `offset` (binary search: the defaults are sorted by offset).
+const DefaultValue* firstDefaultFrom(const Definition& definition, size_t offset) noexcept {
+  const DefaultValue* low = definition.defaults;
+  size_t count = definition.defaultCount;
+  while (count > 0U) {
+    const size_t half = count / 2U;
+    if (low[half].offset < offset) {
+      low += half + 1U;
+      count -= half + 1U;
+    } else {
+      count = half;
+    }
+  }
+  return low;
+}
+
+// Writes one default of a value of type `type` at `target`.
+void writeDefault(const Definition& definition, const DefaultValue& value, DataType type,
+                  uint8_t* target) noexcept {
+  if (isNumeric(type)) {
+    const uint64_t raw =
+        value.size <= 4U ? value.value
+                         : loadLittleEndianBytes(definition.defaultBytes + value.value, value.size);
+    storeNative(target, raw, value.size);
+  } else {
+    copyBytes(target, definition.defaultBytes + value.value, value.size);
+  }
+}
+
+}  // namespace
+
+void copyDefault(const Definition& definition, const EntryRef& ref, uint8_t* destination) noexcept {
+  const size_t bytes = storageBytes(*ref.row);
+  fillBytes(destination, 0, bytes);
+  const DefaultValue* value = firstDefaultFrom(definition, ref.offset());
+  if (value < definition.defaults + definition.defaultCount && value->offset == ref.offset()) {
+    writeDefault(definition, *value, ref.type(), destination);
+  }
+}
+
 void ObjectDictionary::restoreRow(const SubEntry& row) noexcept {
   if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
     return;
   }
-  // A VISIBLE_STRING keeps its terminating zero in both blocks.
-  const size_t bytes = row.type == DataType::kVisibleString ? row.size + 1U : row.size;
-  for (unsigned k = 0; k < row.count; ++k) {
-    const size_t offset = row.offset + k * bytes;
-    uint8_t* target = values_ + offset;
-    copyBytes(target, static_cast<const uint8_t*>(definition_->defaults) + offset, bytes);
-    if ((row.attributes & kNodeIdRelative) != 0U) {
-      storeNative(target, loadNative(target, row.size) + nodeId_, row.size);
+  const size_t bytes = storageBytes(row);
+  const size_t end = row.offset + row.count * bytes;
+  fillBytes(values_ + row.offset, 0, end - row.offset);
+  const Definition& definition = *definition_;
+  const DefaultValue* last = definition.defaults + definition.defaultCount;
+  for (const DefaultValue* value = firstDefaultFrom(definition, row.offset);
+       value < last && value->offset < end; ++value) {
+    writeDefault(definition, *value, row.type, values_ + value->offset);
+  }
+  if ((row.attributes & kNodeIdRelative) != 0U) {
+    for (size_t offset = row.offset; offset < end; offset += bytes) {
+      storeNative(values_ + offset, loadNative(values_ + offset, row.size) + nodeId_, row.size);
     }
   }
 }

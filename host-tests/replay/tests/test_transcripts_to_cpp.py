@@ -127,11 +127,12 @@ class Tables(unittest.TestCase):
             with open(output, encoding="utf-8") as file:
                 source = file.read()
         self.assertLess(source.index('"demo/a.transcript"'), source.index('"demo/b.transcript"'))
-        self.assertIn("{StepKind::kTransmit, 3, 0x01, {0x701, 1, false, false, "
-                      "{0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}}, 0U, nullptr},", source)
-        self.assertIn("{StepKind::kWait, 4, 0x00, {0x0, 0, false, false, "
-                      "{0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}}, 1000U, nullptr},",
-                      source)
+        self.assertIn("{StepKind::kTransmit, 3, 0x01, {0x701, "
+                      "{0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}, 1, false, false}, 0U, "
+                      "nullptr},", source)
+        self.assertIn("{StepKind::kWait, 4, 0x00, {0x0, "
+                      "{0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}, 0, false, false}, 1000U, "
+                      "nullptr},", source)
         self.assertIn('"angle \\"9\\\\0\\""}', source)
         self.assertIn("constexpr uint32_t kIgnored0[] = {0x1FF};", source)
         self.assertIn('{"demo/a.transcript", "example", 1, kSteps0, 2, kIgnored0, 1},',

@@ -20,6 +20,7 @@ STRICT_FLAGS = ["-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", 
 
 CHECKER = r"""
 #include <stdio.h>
+#include "costa/od/object_dictionary.hpp"
 #include "example_od.hpp"
 
 namespace gen = costa::gen::example;
@@ -37,9 +38,14 @@ int main() {
       const costa::od::SubEntry& e = object.rows[r];
       for (unsigned k = 0; k < e.count; ++k) {
         const bool rom = (e.attributes & costa::od::kInRom) != 0;
-        const unsigned char* block = static_cast<const unsigned char*>(rom ? d.constants
-                                                                           : d.defaults);
-        const unsigned offset = e.offset + k * e.size;
+        const costa::od::EntryRef ref{&object, &e, static_cast<uint8_t>(e.subIndex + k)};
+        unsigned char defaults[300] = {};
+        if (!rom && e.type != costa::od::DataType::kDomain) {
+          costa::od::copyDefault(d, ref, defaults);
+        }
+        const unsigned char* block = rom ? static_cast<const unsigned char*>(d.constants)
+                                         : defaults;
+        const unsigned offset = rom ? e.offset + k * e.size : 0;
         printf("E %04X %u %04X %u %u %u %u ", unsigned{object.index}, e.subIndex + k,
                static_cast<unsigned>(e.type), unsigned{e.attributes}, unsigned{e.size},
                unsigned{e.group}, static_cast<unsigned>(object.code));
@@ -122,10 +128,13 @@ class CompileTest(unittest.TestCase):
             for compiler in available:
                 with self.subTest(compiler=os.path.basename(compiler)):
                     objects = []
-                    # The REAL limit check the example's definition names lives in od/src.
+                    # The REAL limit check the example's definition names and the defaults'
+                    # reader live in od/src.
                     sources = [os.path.join(out, "example_od.cpp"),
                                os.path.join(out, "example_od_names.cpp"),
-                               os.path.join(REPO_ROOT, "od", "src", "real_limits.cpp")]
+                               *(os.path.join(REPO_ROOT, "od", "src", name)
+                                 for name in ("real_limits.cpp", "object_dictionary.cpp",
+                                              "little_endian.cpp"))]
                     for source in sources:
                         name = os.path.basename(source)
                         obj = os.path.join(work, f"{os.path.basename(compiler)}-{name}.o")

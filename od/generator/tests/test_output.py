@@ -134,21 +134,36 @@ class ExampleOutputTest(unittest.TestCase):
         self.assertIn("{0xBFF8000000000000ULL, 0x412E848000000000ULL},", self.cpp)  # real32
 
     def test_default_literals(self):
-        for literal in ("(-2147483647 - 1),", "(-9223372036854775807LL - 1),",
-                        "0xFFFFFFFFFFFFFFFFULL,", "3.14159F,", "-0.0025,", "-32768,",
-                        '"Costa \\"v1\\"\\\\\\?",', '"Costa Example",',
-                        "{0x01U, 0x02U, 0xA0U, 0xFFU, 0x00U, 0x00U},", '{"ab", ""},',
-                        "{-7, -7},", "0x00000080U,  // x1014_cob_id_emcy"):
+        # Constants (ROM) as C++ literals.
+        for literal in ('"Costa Example",', "{-7, -7},", "{0x01U, 0x02U, 0xA0U},"):
             with self.subTest(literal=literal):
                 self.assertIn(literal, self.cpp)
+        # RAM defaults: the non-zero ones only, numbers of up to 4 bytes as their bits, the
+        # rest (64-bit numbers, strings, octets) as bytes of kDefaultBytes.
+        for record in ("{offsetof(Values, x1014_cob_id_emcy), 4, 0x80U},  // 0x1014:0",
+                       "X2000Integers, int16), 2, 0x8000U},  // 0x2000:2",
+                       "X2000Integers, int32), 4, 0x80000000U},  // 0x2000:3",
+                       "X2000Integers, int64), 8, 0x0U},  // 0x2000:4",
+                       "{offsetof(Values, x2001_real32_value), 4, 0x40490FD0U},  // 0x2001:0",
+                       "{offsetof(Values, x2003_serial_text), 21, 0x18U},  // 0x2003:0"):
+            with self.subTest(record=record):
+                self.assertIn(record, self.cpp)
+        self.assertNotIn("x1001_error_register), 1", self.cpp)  # default 0: no record
+        self.assertIn("0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0xFF, 0xFF", self.cpp)
+        self.assertIn('static_assert(costa::od::sortedByOffset(kDefaults), "defaults in the '
+                      'order of their offsets");', self.cpp)
 
     def test_definition(self):
         device, _ = parse_file(EXAMPLE_EDS)
         rows = "".join(f"{e.index:04X}.{e.sub:02X}:{e.data_type.code:04X}:{e.size}:{e.group}\n"
                        for e in device.all_entries() if e.group)
         layout = zlib.crc32(rows.encode("ascii"))
+        defaults = sum(1 for e in device.all_entries()
+                       if not e.in_rom and e.has_storage
+                       and (any(e.default) if isinstance(e.default, bytes) else e.default != 0))
         self.assertIn("const costa::od::Definition kDefinition = {\n    kObjects,\n    31,\n"
-                      "    &kConstants,\n    &kDefaults,\n    sizeof(Values),\n"
+                      "    &kConstants,\n    kDefaults,\n    kDefaultBytes,\n    "
+                      f"{defaults},\n    sizeof(Values),\n"
                       f"    0x{layout:08X}U,\n    \"Costa example device\",\n    kLimits,\n"
                       "    &costa::od::checkRealLimits,\n    kObjectSlots,\n    6,\n};", self.cpp)
 
@@ -214,7 +229,8 @@ class SmallOutputTest(unittest.TestCase):
         self.assertEqual(result.status, 0)
         header = result.files["test_od.hpp"]
         self.assertIn("struct Values {\n  uint8_t unused_;", header)
-        self.assertIn("0U,  // unused_", result.files["test_od.cpp"])
+        self.assertIn("{0, 0, 0},  // none: keeps the array non-empty", result.files["test_od.cpp"])
+        self.assertIn("    kDefaults,\n    kDefaultBytes,\n    0,\n", result.files["test_od.cpp"])
         self.assertIn('"test",', result.files["test_od.cpp"])  # no ProductName
         self.assertIn("kLargestValue = 4;", header)
         self.assertIn("kHeartbeatConsumers = 0;", header)

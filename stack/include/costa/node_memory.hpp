@@ -41,7 +41,7 @@ struct NodeMemory {
 
 /// Compile-time capacities of a NodeInstance beyond what the dictionary dictates.
 struct DefaultNodeCapacity {
-  static constexpr size_t kTxQueueDepth = 32;
+  static constexpr size_t kTxQueueDepth = 8;
   static constexpr size_t kHooks = 8;
   static constexpr size_t kMinimumSdoBuffer = 32;
   static constexpr size_t kEmcyConditions = 8;

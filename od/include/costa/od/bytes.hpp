@@ -16,6 +16,25 @@ inline void fillBytes(void* to, int value, size_t count) noexcept {
   __builtin_memset(to, value, count);
 }
 
+/// The alignment a value of type T has in a dictionary's value blocks (natural, at most 4).
+template <typename T>
+inline constexpr size_t kValueAlignment = alignof(T) < 4U ? alignof(T) : 4U;
+
+/// Loads a T from `address`, aligned for it as every numeric value of a dictionary block is: one
+/// load even where the CPU cannot load from any address.
+template <typename T>
+inline T loadAligned(const void* address) noexcept {
+  T value;
+  __builtin_memcpy(&value, __builtin_assume_aligned(address, kValueAlignment<T>), sizeof(T));
+  return value;
+}
+
+/// Stores a T at `address`, aligned as for loadAligned().
+template <typename T>
+inline void storeAligned(void* address, T value) noexcept {
+  __builtin_memcpy(__builtin_assume_aligned(address, kValueAlignment<T>), &value, sizeof(T));
+}
+
 inline int compareBytes(const void* a, const void* b, size_t count) noexcept {
   return __builtin_memcmp(a, b, count);
 }

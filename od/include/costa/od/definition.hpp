@@ -46,6 +46,29 @@ struct Limits {
 using RealLimitCheck = AbortCode (*)(DataType type, uint64_t raw, const Limits& limits);
 AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noexcept;
 
+/// A non-zero default of the RAM block: `size` bytes at `offset`. A number of up to 4 bytes is
+/// `value` itself (stored in the CPU's byte order); anything longer (strings, octet strings,
+/// 64-bit numbers) is the `size` little-endian bytes at Definition::defaultBytes + `value`.
+/// Every byte no DefaultValue covers defaults to zero. A `$NODEID` default is held without the
+/// node-id.
+struct DefaultValue {
+  uint16_t offset;
+  uint16_t size;
+  uint32_t value;
+};
+
+/// True when `defaults` are in strictly increasing order of offsets (the generator checks its
+/// tables with it at compile time; lookups depend on it).
+template <size_t N>
+constexpr bool sortedByOffset(const DefaultValue (&defaults)[N]) noexcept {
+  for (size_t i = 1; i < N; ++i) {
+    if (defaults[i].offset <= defaults[i - 1U].offset) {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// One row of an object: `count` consecutive sub-indices from `subIndex` that share every
 /// property. Value k of the row (sub-index subIndex + k) lies at `offset + k * size`; the
 /// generator merges only fixed-size values stored back to back (array items, record members of
@@ -59,8 +82,7 @@ struct SubEntry {
   uint8_t group;       ///< StorageGroup.
   uint8_t limits;      ///< 0: no limits; else 1 + the row of Definition::limits.
   uint16_t offset;     ///< Of the first value, in the RAM values block, or in the ROM
-                       ///< constants block when kInRom. The ROM defaults block has the
-                       ///< values' layout.
+                       ///< constants block when kInRom.
 };
 
 /// Object codes of CiA 301 (EDS ObjectType).
@@ -83,8 +105,10 @@ struct Object {
 struct Definition {
   const Object* objects;
   uint16_t objectCount;
-  const void* constants;      ///< ROM block holding `const` values.
-  const void* defaults;       ///< ROM block holding default values, laid out like the RAM block.
+  const void* constants;         ///< ROM block holding `const` values.
+  const DefaultValue* defaults;  ///< The non-zero defaults of the RAM block, by offset.
+  const uint8_t* defaultBytes;   ///< Bytes of the defaults longer than 4 bytes.
+  uint16_t defaultCount;
   uint32_t valuesSize;        ///< Size of the RAM values block in bytes.
   uint32_t layoutId;          ///< Identifies the layout of the stored groups (for stored images).
   const char* deviceName;     ///< Name of the device description the tables were generated from.

@@ -10,64 +10,78 @@ namespace costa {
 /// copied between the dictionary and frames without conversion.
 inline constexpr bool kLittleEndianHost = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
 
-/// Writes the low `length` bytes of `value`, least significant first. `length` <= 8.
-inline void storeLittleEndian(uint8_t* destination, uint64_t value, size_t length) noexcept {
-  for (size_t i = 0; i < length; ++i) {
-    destination[i] = static_cast<uint8_t>(value >> (8U * i));
-  }
-}
+/// The CPU loads and stores a 2- or 4-byte integer at any address (x86, Cortex-M3/M4/M7), so a
+/// value in a frame is one load; without it (Cortex-M0/M0+), byte by byte.
+#if defined(__ARM_FEATURE_UNALIGNED) || defined(__x86_64__) || defined(__i386__) || \
+    defined(__aarch64__)
+inline constexpr bool kUnalignedAccess = true;
+#else
+inline constexpr bool kUnalignedAccess = false;
+#endif
 
-/// Reads `length` bytes, least significant first, zero-extended. `length` <= 8. The sizes of
-/// numbers are one load on a little-endian CPU.
-inline uint64_t loadLittleEndian(const uint8_t* source, size_t length) noexcept {
-  if (kLittleEndianHost) {
-    switch (length) {
-      case 1: return *source;
-      case 2: {
-        uint16_t v = 0;
-        __builtin_memcpy(&v, source, 2);
-        return v;
-      }
-      case 4: {
-        uint32_t v = 0;
-        __builtin_memcpy(&v, source, 4);
-        return v;
-      }
-      case 8: {
-        uint64_t v = 0;
-        __builtin_memcpy(&v, source, 8);
-        return v;
-      }
-      default: break;
-    }
-  }
-  uint64_t value = 0;
-  for (size_t i = 0; i < length; ++i) {
-    value |= static_cast<uint64_t>(source[i]) << (8U * i);
-  }
-  return value;
-}
+/// Built for size (-Os): the inline fast paths of the dictionary's reads and writes are left out
+/// and every access takes the one out-of-line path, which does the same with a call more.
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool kExpandFastPaths = false;
+#else
+inline constexpr bool kExpandFastPaths = true;
+#endif
 
 inline uint16_t loadU16(const uint8_t* source) noexcept {
-  return static_cast<uint16_t>(loadLittleEndian(source, 2));
+  if constexpr (kLittleEndianHost && kUnalignedAccess) {
+    uint16_t v = 0;
+    __builtin_memcpy(&v, source, 2);
+    return v;
+  }
+  return static_cast<uint16_t>(source[0] | (source[1] << 8U));
 }
 
 inline uint32_t loadU32(const uint8_t* source) noexcept {
-  return static_cast<uint32_t>(loadLittleEndian(source, 4));
+  if constexpr (kLittleEndianHost && kUnalignedAccess) {
+    uint32_t v = 0;
+    __builtin_memcpy(&v, source, 4);
+    return v;
+  }
+  return static_cast<uint32_t>(source[0]) | (static_cast<uint32_t>(source[1]) << 8U) |
+         (static_cast<uint32_t>(source[2]) << 16U) | (static_cast<uint32_t>(source[3]) << 24U);
+}
+
+inline void storeU16(uint8_t* destination, uint16_t value) noexcept {
+  destination[0] = static_cast<uint8_t>(value);
+  destination[1] = static_cast<uint8_t>(value >> 8U);
+}
+
+inline void storeU32(uint8_t* destination, uint32_t value) noexcept {
+  if constexpr (kLittleEndianHost && kUnalignedAccess) {
+    __builtin_memcpy(destination, &value, 4);
+    return;
+  }
+  destination[0] = static_cast<uint8_t>(value);
+  destination[1] = static_cast<uint8_t>(value >> 8U);
+  destination[2] = static_cast<uint8_t>(value >> 16U);
+  destination[3] = static_cast<uint8_t>(value >> 24U);
+}
+
+/// Writes the low `length` bytes of `value`, least significant first. `length` <= 8.
+void storeLittleEndian(uint8_t* destination, uint64_t value, size_t length) noexcept;
+
+/// Reads `length` bytes, least significant first, zero-extended. `length` <= 8.
+uint64_t loadLittleEndianBytes(const uint8_t* source, size_t length) noexcept;
+
+/// loadLittleEndianBytes(); the sizes of numbers are one load where the CPU allows it.
+inline uint64_t loadLittleEndian(const uint8_t* source, size_t length) noexcept {
+  if constexpr (kExpandFastPaths && kLittleEndianHost && kUnalignedAccess) {
+    switch (length) {
+      case 1: return *source;
+      case 2: return loadU16(source);
+      case 4: return loadU32(source);
+      default: break;
+    }
+  }
+  return loadLittleEndianBytes(source, length);
 }
 
 /// Sign-extends the low `length` bytes of `raw`. `length` in 1..8 (0 gives 0).
-inline int64_t signExtend(uint64_t raw, size_t length) noexcept {
-  if (length == 0U) {
-    return 0;
-  }
-  if (length >= 8U) {
-    return static_cast<int64_t>(raw);
-  }
-  const uint64_t sign = uint64_t{1} << (8U * length - 1U);
-  const uint64_t mask = (uint64_t{1} << (8U * length)) - 1U;
-  raw &= mask;
-  return (raw & sign) != 0U ? static_cast<int64_t>(raw | ~mask) : static_cast<int64_t>(raw);
-}
+int64_t signExtend(uint64_t raw, size_t length) noexcept;
 
 }  // namespace costa

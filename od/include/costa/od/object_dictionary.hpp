@@ -12,6 +12,11 @@
 
 namespace costa::od {
 
+/// The default of one RAM sub-index as its value holds it (CPU byte order; a `$NODEID` default
+/// without the node-id; a VISIBLE_STRING with its terminating zero): storage bytes of the value
+/// into `destination`. O(log defaults).
+void copyDefault(const Definition& definition, const EntryRef& ref, uint8_t* destination) noexcept;
+
 /// Reads and writes values by index and sub-index, with the checks every writer must pass
 /// (length, limits, boolean range). Access rights (ro/wo) and side effects are not checked here:
 /// those belong to the services that act for a remote client (SDO, PDO).
@@ -48,11 +53,11 @@ class ObjectDictionary {
               size_t capacity) const noexcept;
 
   /// The wire representation of a numeric value (ref.size() bytes) into `destination`. The
-  /// usual case (a value of 1, 2 or 4 bytes in RAM on a little-endian CPU) is one load and
-  /// store.
+  /// usual case (a value of 1, 2 or 4 bytes in RAM on a little-endian CPU that loads at any
+  /// address, not built for size) is one load and store.
   void readNumber(const EntryRef& ref, uint8_t* destination) const noexcept {
-    const uint8_t* source = values_ + ref.offset();
-    if (kLittleEndianHost && !ref.inRom()) {
+    if (kExpandFastPaths && kLittleEndianHost && kUnalignedAccess && !ref.inRom()) {
+      const uint8_t* source = values_ + ref.offset();
       switch (ref.size()) {
         case 1: *destination = *source; return;
         case 2: copyBytes(destination, source, 2); return;
@@ -70,11 +75,12 @@ class ObjectDictionary {
 
   /// check() and, when it passes, stores the value. A VISIBLE_STRING shorter than its
   /// capacity is padded with zeros. The usual write (a whole integer of 1, 2 or 4 bytes
-  /// without limits, in RAM, on a little-endian CPU) is a test and a copy.
+  /// without limits, in RAM, on a little-endian CPU that stores at any address, not built for
+  /// size) is a test and a copy.
   AbortCode write(const EntryRef& ref, const uint8_t* source, size_t length) noexcept {
     const SubEntry& row = *ref.row;
-    if (kLittleEndianHost && length == row.size && row.limits == 0U &&
-        (row.attributes & kInRom) == 0U && isInteger(row.type)) {
+    if (kExpandFastPaths && kLittleEndianHost && kUnalignedAccess && length == row.size &&
+        row.limits == 0U && (row.attributes & kInRom) == 0U && isInteger(row.type)) {
       uint8_t* target = values_ + ref.offset();
       switch (length) {
         case 1: *target = *source; return AbortCode::kNone;
