@@ -10,10 +10,11 @@ constexpr uint8_t kSelfTest = 3;
 }  // namespace
 
 ExampleDevice::ExampleDevice(Node& node, uint32_t serialNumber) noexcept
-    : node_(node), serialNumber_(serialNumber) {
-  attached_ = node.attachHook(kCommand, kCommand, *this) &&
-              node.attachHook(kScratchPad, kScratchPad, *this) &&
-              node.attachHook(kOperatingMode, kOperatingMode, *this) && node.addListener(*this);
+    : node_(node),
+      serialNumber_(serialNumber),
+      attached_(node.attachHook(kCommand, kCommand, *this) &&
+                node.attachHook(kScratchPad, kScratchPad, *this) &&
+                node.attachHook(kOperatingMode, kOperatingMode, *this) && node.addListener(*this)) {
 }
 
 void ExampleDevice::onResetApplication() noexcept {

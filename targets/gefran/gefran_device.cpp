@@ -40,9 +40,10 @@ int tableIndexOf(uint32_t kbits) {
 }  // namespace
 
 GefranDevice::GefranDevice(Node& node, HallSensors& sensors) noexcept
-    : node_(node), sensors_(sensors) {
-  attached_ = node.attachHook(kResolution, kZeroPoint, *this) &&
-              node.attachHook(kLssParameters, kLssParameters, *this) && node.addListener(*this);
+    : node_(node),
+      sensors_(sensors),
+      attached_(node.attachHook(kResolution, kZeroPoint, *this) &&
+                node.attachHook(kLssParameters, kLssParameters, *this) && node.addListener(*this)) {
 }
 
 uint32_t GefranDevice::value(uint16_t index, uint8_t sub) const noexcept {

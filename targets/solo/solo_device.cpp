@@ -28,9 +28,8 @@ SoloDevice::SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId,
       drive_(drive),
       errors_(node),
       powerOnNodeId_(powerOnNodeId),
-      nodeIdGiven_(nodeIdGiven) {
-  attached_ = node.attachHook(kFirstObject, kLastObject, *this) && node.addListener(*this);
-}
+      nodeIdGiven_(nodeIdGiven),
+      attached_(node.attachHook(kFirstObject, kLastObject, *this) && node.addListener(*this)) {}
 
 uint32_t SoloDevice::readU32(uint16_t index) const noexcept {
   return static_cast<uint32_t>(node_.dictionary().readUnsigned(index, 0, 0));
