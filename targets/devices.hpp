@@ -22,8 +22,9 @@
 #include "gefran_target.hpp"
 #include "solo_target.hpp"
 
-// NOLINTBEGIN(cppcoreguidelines-macro-usage): an X-macro, the one list that both the compiler
-// (types) and the build of each firmware image (a name) can expand.
+// NOLINTBEGIN(cppcoreguidelines-macro-usage,bugprone-macro-parentheses): an X-macro, the one
+// list that both the compiler (types) and the build of each firmware image (a name) can expand;
+// its arguments are a name and a type, which no parentheses may enclose.
 #define COSTA_DEVICES(X)                      \
   X(example, ::costa::example::ExampleTarget) \
   X(solo, ::costa::solo::SoloTarget)          \
@@ -52,7 +53,7 @@ constexpr void forEachDevice(Visitor&& visit) {
   COSTA_DEVICES(COSTA_VISIT_DEVICE)
 #undef COSTA_VISIT_DEVICE
 }
-// NOLINTEND(cppcoreguidelines-macro-usage)
+// NOLINTEND(cppcoreguidelines-macro-usage,bugprone-macro-parentheses)
 
 /// How many devices the list has.
 inline constexpr size_t kCount = [] {
