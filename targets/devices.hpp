@@ -34,8 +34,7 @@
 namespace costa::devices {
 
 /// Each device's composition under its name: costa::devices::gra is gefran::GraTarget.
-#define COSTA_DEVICE_ALIAS(name, Composition) \
-  using name = Composition;  // NOLINT(bugprone-macro-parentheses): a type
+#define COSTA_DEVICE_ALIAS(name, Composition) using name = Composition;
 COSTA_DEVICES(COSTA_DEVICE_ALIAS)
 #undef COSTA_DEVICE_ALIAS
 
