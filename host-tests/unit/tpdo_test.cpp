@@ -246,7 +246,7 @@ TEST_F(Tpdo, Type254IsEventDrivenLike255) {
 }
 
 class TpdoSoloStyle : public ExampleNodeTest {
- protected:
+ public:
   static NodeSettings settings() {
     NodeSettings settings;
     settings.profile.pdo.tpdoRtrTypes = TpdoRtrTypes::kAllTypes;
@@ -254,6 +254,8 @@ class TpdoSoloStyle : public ExampleNodeTest {
     settings.profile.pdo.tpdoOnEnteringOperational = true;
     return settings;
   }
+
+ protected:
   TpdoSoloStyle() : ExampleNodeTest(settings()) {}
 };
 
@@ -271,6 +273,37 @@ TEST_F(TpdoSoloStyle, ProfileSelectsRtrTypesTypeZeroAndStartTransmission) {
     rx 181 [0] RTR                       # and on RTR
     tx 181 [6] 00 00 00 00 D7 00
   )");
+}
+
+class TpdoAutomaticStart : public ExampleNodeTest {
+ protected:
+  static NodeSettings settings() {
+    NodeSettings settings = TpdoSoloStyle::settings();
+    settings.automaticStart = true;
+    return settings;
+  }
+  TpdoAutomaticStart() : ExampleNodeTest(settings()) {}
+  void SetUp() override {}  // the boot-up is the test's first line
+};
+
+TEST_F(TpdoAutomaticStart, EnteringOperationalByItselfSendsThePdosInTheSameCycle) {
+  // After every boot-up, also one long after power-on: the start and its PDOs come at once.
+  EXPECT_TRANSCRIPT(R"(
+    tx 701 [1] 00
+    tx 181 [6] 00 00 00 00 D7 00
+    tx 281 [8] FF FF FF FF FF FF FF FF
+    wait 1500
+    rx 000 [2] 81 01
+    tx 701 [1] 00
+    tx 181 [6] 00 00 00 00 D7 00
+    tx 281 [8] FF FF FF FF FF FF FF FF
+    wait 700
+    rx 000 [2] 82 01
+    tx 701 [1] 00
+    tx 181 [6] 00 00 00 00 D7 00
+    tx 281 [8] FF FF FF FF FF FF FF FF
+  )");
+  EXPECT_EQ(bus_.node().state(), NmtState::kOperational);
 }
 
 }  // namespace

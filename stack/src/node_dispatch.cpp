@@ -101,6 +101,8 @@ void Node::handleSync(const SyncEvent& sync) noexcept {
 
 Microseconds Node::runDue() noexcept {
   const Microseconds at = clock_.now;
+  // The automatic start first: what entering operational starts (TPDOs) runs in this cycle.
+  nmt_.process();
   sdo_.process(at);
   lss_.process(at);
   tx_.setGate(TransmitPath::kBitTiming, lss_.transmissionSuspended());
@@ -114,7 +116,6 @@ Microseconds Node::runDue() noexcept {
     }
     pdos_.process(at);
     emcy_.process(at, nmt_.state(), tx_);
-    nmt_.process();
   }
   tx_.flush(at);
   Microseconds next = earliest(sdo_.nextDeadline(), heartbeat_.nextDeadline());
@@ -124,9 +125,10 @@ Microseconds Node::runDue() noexcept {
   next = earliest(next, emcy_.nextDeadline(nmt_.state()));
   next = earliest(next, lss_.nextDeadline());
   next = earliest(next, nmt_.nextDeadline());
-  // Every deadline is one of these: what the services scheduled while they ran is in them.
-  clock_.next = next;
-  return next;
+  // Every deadline is one of these: what the services scheduled while they ran is in them. One
+  // that has passed already (work a service found due after its turn) means: at once.
+  clock_.next = next < at ? at : next;
+  return clock_.next;
 }
 
 }  // namespace costa

@@ -55,7 +55,8 @@ void GefranDevice::onResetApplication() noexcept {
 }
 
 void GefranDevice::onResetCommunication() noexcept {
-  autoStartPending_ = value(kAutoStart, 0) == 1U;
+  // 0x5000 = 1: automatic NMT start after the boot-up (E16, E17).
+  node_.setAutomaticStart(value(kAutoStart, 0) == 1U);
 }
 
 void GefranDevice::onStoredParametersInvalid(uint8_t group, StoreResult result) noexcept {
@@ -116,10 +117,6 @@ Microseconds GefranDevice::process(Microseconds now) noexcept {
   (void)now;
   updateAngles();
   updateErrors();
-  if (autoStartPending_ && node_.state() == NmtState::kPreOperational) {
-    autoStartPending_ = false;
-    node_.enterState(NmtState::kOperational);  // 0x5000 = 1: automatic NMT start (E16, E17)
-  }
   return kNever;
 }
 

@@ -43,7 +43,6 @@ class GefranDevice : public ObjectHook, public NodeEvents {
 
   Node& node_;
   HallSensors& sensors_;
-  bool autoStartPending_ = false;
   uint8_t storedFaults_ = 0;    ///< faults found in stored parameters since power-on
   uint8_t reportedFaults_ = 0;  ///< 0x4001 bits whose EMCY condition is raised
   bool attached_;               ///< last: every other member is ready when the node gets the hooks
