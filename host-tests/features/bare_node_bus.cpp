@@ -17,24 +17,19 @@ NodeSettings BareNodeBus::settings(NvStorage* storage) {
 
 BareNodeBus::BareNodeBus() : node_(gen::example::kDefinition, can_, settings(&storage_)) {
   NoAllocationScope scope;
-  node_.start(now_);
+  node_.start(clock_.now());
   runProcess();
 }
 
 void BareNodeBus::runProcess() {
-  constexpr int kImmediateRunsAllowed = 1000;
-  for (int run = 0; run < kImmediateRunsAllowed; ++run) {
-    nextDeadline_ = node_.process(now_);
-    if (nextDeadline_ > now_) {
-      return;
-    }
-  }
-  ADD_FAILURE() << "process() keeps asking to run again at " << now_ << " us";
+  const auto outcome = clock_.runProcess([this](Microseconds now) { return node_.process(now); });
+  EXPECT_EQ(outcome, replay::VirtualClock::Outcome::kOk)
+      << "process() asked for " << clock_.failedDeadline() << " us at " << clock_.now() << " us";
 }
 
 void BareNodeBus::send(const CanFrame& frame) {
   NoAllocationScope scope;
-  node_.onFrame(frame, now_);
+  node_.onFrame(frame, clock_.now());
   runProcess();
 }
 
@@ -49,13 +44,10 @@ bool BareNodeBus::receive(CanFrame* frame, int timeoutMs) {
 
 void BareNodeBus::wait(uint64_t milliseconds) {
   NoAllocationScope scope;
-  const Microseconds end = now_ + milliseconds * 1000U;
-  while (nextDeadline_ <= end) {
-    now_ = nextDeadline_ > now_ ? nextDeadline_ : now_;
-    runProcess();
-  }
-  now_ = end;
-  runProcess();
+  const auto outcome = clock_.advance(static_cast<Microseconds>(milliseconds * 1000U),
+                                      [this](Microseconds now) { return node_.process(now); });
+  EXPECT_EQ(outcome, replay::VirtualClock::Outcome::kOk)
+      << "process() asked for " << clock_.failedDeadline() << " us at " << clock_.now() << " us";
 }
 
 std::string BareNodeBus::simulate(const std::string& command) {

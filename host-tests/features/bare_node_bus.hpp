@@ -10,13 +10,14 @@
 #include "costa/port/memory/recording_can.hpp"
 #include "example_od.hpp"
 #include "transcript_player.hpp"
+#include "virtual_clock.hpp"
 
 namespace costa::test {
 
 class BareNodeBus : public TranscriptBus {
  public:
   /// Node-id 1, LSS asked for (bit rates of the CiA 305 table), parameters in a memory
-  /// storage; powered on at virtual time 0.
+  /// storage; powered on at the unit tests' virtual power-on time (1 s before the clock wraps).
   BareNodeBus();
 
   void send(const CanFrame& frame) override;
@@ -35,8 +36,7 @@ class BareNodeBus : public TranscriptBus {
   port::RecordingCan can_;
   port::MemoryStorageOf<4096> storage_;
   NodeInstance<gen::example::Values, gen::example::Capacity> node_;
-  Microseconds now_ = 0;
-  Microseconds nextDeadline_ = 0;
+  replay::VirtualClock clock_{0xFFFFFFFFU - 999999U};
   size_t cursor_ = 0;
 };
 

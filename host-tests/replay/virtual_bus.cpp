@@ -3,17 +3,18 @@
 namespace costa::replay {
 
 bool VirtualBus::powerOn() noexcept {
-  device_.start(now_);
+  device_.start(clock_.now());
   return runProcess();
 }
 
 bool VirtualBus::send(const CanFrame& frame) noexcept {
-  device_.onFrame(frame, now_);
+  device_.onFrame(frame, clock_.now());
   return runProcess();
 }
 
 bool VirtualBus::wait(uint64_t milliseconds) noexcept {
-  return advance(milliseconds * 1000U);
+  return checked(
+      clock_.advance(static_cast<Microseconds>(milliseconds * 1000U), processAndRecord()));
 }
 
 bool VirtualBus::simulate(const char* command, Text& why) noexcept {
@@ -21,36 +22,20 @@ bool VirtualBus::simulate(const char* command, Text& why) noexcept {
 }
 
 bool VirtualBus::runProcess() noexcept {
-  // A deadline of `now` asks for another call at once (a block upload queueing a sub-block
-  // longer than the transmit queue); a deadline in the past, or `now` without end, is a bug.
-  constexpr int kImmediateRunsAllowed = 1000;
-  for (int run = 0;; ++run) {
-    nextDeadline_ = device_.process(now_);
-    if (!recorderKeptUp()) {
-      return false;
-    }
-    if (nextDeadline_ > now_) {
-      return true;
-    }
-    if (nextDeadline_ < now_ || run == kImmediateRunsAllowed) {
-      failure_.clear();
-      failure_.append("process() asked to run again at ").appendDecimal(nextDeadline_);
-      failure_.append(" us, not after now (").appendDecimal(now_).append(" us)");
-      return false;
-    }
-  }
+  return checked(clock_.runProcess(processAndRecord()));
 }
 
-bool VirtualBus::advance(Microseconds microseconds) noexcept {
-  const Microseconds end = now_ + microseconds;
-  while (nextDeadline_ <= end) {
-    now_ = nextDeadline_ > now_ ? nextDeadline_ : now_;
-    if (!runProcess()) {
-      return false;
-    }
+bool VirtualBus::checked(VirtualClock::Outcome outcome) noexcept {
+  if (!recorderKeptUp()) {
+    return false;
   }
-  now_ = end;
-  return runProcess();
+  if (outcome == VirtualClock::Outcome::kOk) {
+    return true;
+  }
+  failure_.clear();
+  failure_.append("process() asked to run again at ").appendDecimal(clock_.failedDeadline());
+  failure_.append(" us, not after now (").appendDecimal(clock_.now()).append(" us)");
+  return false;
 }
 
 bool VirtualBus::recorderKeptUp() noexcept {

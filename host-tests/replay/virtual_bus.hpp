@@ -1,16 +1,11 @@
-// A device on a virtual clock, with exactly the time semantics of the host tests' InProcessBus
-// (host-tests/support/in_process_bus.cpp), so that a replay here sends what a replay there
-// sends, frame for frame:
-//   power on:  start(0), then process() until it asks for a later time
-//   send:      onFrame(frame, now), then the same process() loop
-//   wait:      every deadline on the way is run at its own time, then process() at the end
-// process() may ask for an immediate call again (a deadline equal to now) up to 1000 times in
-// a row; a deadline in the past, or more immediate calls, fail the replay.
+// A device on a virtual clock (virtual_clock.hpp), the clock of the host tests' InProcessBus
+// too, so that a replay here sends what a replay there sends, frame for frame.
 #pragma once
 
 #include <stdint.h>
 
 #include "costa/time.hpp"
+#include "virtual_clock.hpp"
 #include "fixed_text.hpp"
 #include "frame_recorder.hpp"
 #include "replay_device.hpp"
@@ -19,8 +14,13 @@ namespace costa::replay {
 
 class VirtualBus {
  public:
-  VirtualBus(ReplayDevice& device, FrameRecorder& recorder) noexcept
-      : device_(device), recorder_(recorder) {}
+  /// One second before the 32-bit microsecond clock wraps: every replay longer than a second
+  /// crosses the wrap, which the node must not notice.
+  static constexpr Microseconds kPowerOnTime = 0xFFFFFFFFU - 999999U;
+
+  VirtualBus(ReplayDevice& device, FrameRecorder& recorder,
+             Microseconds powerOnTime = kPowerOnTime) noexcept
+      : device_(device), recorder_(recorder), clock_(powerOnTime) {}
 
   // Each returns false when the replay cannot go on; failure() then says why.
   bool powerOn() noexcept;
@@ -33,21 +33,27 @@ class VirtualBus {
   /// The next frame the slave sent that has not been read; false when none.
   bool receive(CanFrame* frame) noexcept { return recorder_.next(frame); }
 
-  Microseconds now() const noexcept { return now_; }
+  Microseconds now() const noexcept { return clock_.now(); }
   const char* failure() const noexcept { return failure_.c_str(); }
 
  private:
   /// Calls process() now, again while it asks for an immediate call.
   bool runProcess() noexcept;
-  /// Advances virtual time by `microseconds`, running every deadline on the way.
-  bool advance(Microseconds microseconds) noexcept;
+  /// The device's process(), then whether the recorder kept up (a full recorder ends the loop).
+  auto processAndRecord() noexcept {
+    return [this](Microseconds now) {
+      const Microseconds next = device_.process(now);
+      return recorder_.overflowed() ? kNever : next;
+    };
+  }
+  /// True for a clean outcome; else false with the failure.
+  bool checked(VirtualClock::Outcome outcome) noexcept;
   /// False with a failure when the recorder had to refuse a frame.
   bool recorderKeptUp() noexcept;
 
   ReplayDevice& device_;
   FrameRecorder& recorder_;
-  Microseconds now_ = 0;
-  Microseconds nextDeadline_ = 0;
+  VirtualClock clock_;
   FixedText<96> failure_;
 };
 

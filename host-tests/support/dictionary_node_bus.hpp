@@ -9,14 +9,16 @@
 #include "allocation_guard.hpp"
 #include "costa/node.hpp"
 #include "costa/port/memory/recording_can.hpp"
+#include "in_process_bus.hpp"
 #include "transcript_player.hpp"
+#include "virtual_clock.hpp"
 
 namespace costa::test {
 
 template <typename Values, typename Capacity>
 class DictionaryNodeBus : public TranscriptBus {
  public:
-  /// Powers the node on at virtual time 0.
+  /// Powers the node on at InProcessBus::powerOnTime().
   DictionaryNodeBus(const od::Definition& definition, const NodeSettings& settings,
                     NodeEvents* events = nullptr)
       : node_(definition, can_, settings) {
@@ -24,13 +26,13 @@ class DictionaryNodeBus : public TranscriptBus {
     if (events != nullptr) {
       EXPECT_TRUE(node_.addListener(*events));
     }
-    node_.start(now_);
+    node_.start(clock_.now());
     runProcess();
   }
 
   void send(const CanFrame& frame) override {
     NoAllocationScope scope;
-    node_.onFrame(frame, now_);
+    node_.onFrame(frame, clock_.now());
     runProcess();
   }
   bool receive(CanFrame* frame, int timeoutMs) override {
@@ -43,13 +45,8 @@ class DictionaryNodeBus : public TranscriptBus {
   }
   void wait(uint64_t milliseconds) override {
     NoAllocationScope scope;
-    const Microseconds end = now_ + milliseconds * 1000U;
-    while (nextDeadline_ <= end) {
-      now_ = nextDeadline_ > now_ ? nextDeadline_ : now_;
-      runProcess();
-    }
-    now_ = end;
-    runProcess();
+    expectOk(clock_.advance(static_cast<Microseconds>(milliseconds * 1000U),
+                            [this](Microseconds now) { return node_.process(now); }));
   }
   bool checksTiming() const override { return true; }
   std::string simulate(const std::string& command) override {
@@ -61,20 +58,17 @@ class DictionaryNodeBus : public TranscriptBus {
  private:
   /// Runs process() now, and again while it asks for an immediate call.
   void runProcess() {
-    constexpr int kImmediateRunsAllowed = 1000;
-    for (int run = 0; run < kImmediateRunsAllowed; ++run) {
-      nextDeadline_ = node_.process(now_);
-      if (nextDeadline_ > now_) {
-        return;
-      }
-    }
-    ADD_FAILURE() << "process() keeps asking to run again at " << now_ << " us";
+    expectOk(clock_.runProcess([this](Microseconds now) { return node_.process(now); }));
+  }
+  void expectOk(replay::VirtualClock::Outcome outcome) {
+    EXPECT_EQ(outcome, replay::VirtualClock::Outcome::kOk)
+        << "process() asked for " << clock_.failedDeadline() << " us at " << clock_.now()
+        << " us";
   }
 
   port::RecordingCan can_;
   NodeInstance<Values, Capacity> node_;
-  Microseconds now_ = 0;
-  Microseconds nextDeadline_ = 0;
+  replay::VirtualClock clock_{InProcessBus::powerOnTime()};
   size_t cursor_ = 0;
 };
 

@@ -2,12 +2,22 @@
 
 #include <gtest/gtest.h>
 
+#include <stdlib.h>
+
 #include <stdexcept>
 
 #include "allocation_guard.hpp"
 #include "device_registry.hpp"
 
 namespace costa::test {
+
+Microseconds InProcessBus::powerOnTime() {
+  static const Microseconds start = [] {
+    const char* text = getenv("COSTA_TEST_CLOCK_START");
+    return text != nullptr ? static_cast<Microseconds>(strtoul(text, nullptr, 0)) : 0U;
+  }();
+  return start;
+}
 
 InProcessBus::InProcessBus(const std::string& device, int nodeId,
                            const host::TargetOptions& extra) {
@@ -31,30 +41,26 @@ InProcessBus::InProcessBus(const Factory& factory) : target_(factory(can_)) {
 
 void InProcessBus::powerOn() {
   NoAllocationScope scope;
-  target_->start(now_);
+  target_->start(clock_.now());
   runProcess();
 }
 
-bool InProcessBus::runProcess() {
-  // A deadline of `now` asks for another call at once (a block upload queueing a sub-block
-  // longer than the transmit queue); a deadline in the past, or `now` without end, is a bug.
-  constexpr int kImmediateRunsAllowed = 1000;
-  for (int run = 0;; ++run) {
-    nextDeadline_ = target_->process(now_);
-    if (nextDeadline_ > now_) {
-      return true;
-    }
-    if (nextDeadline_ < now_ || run == kImmediateRunsAllowed) {
-      ADD_FAILURE() << "process() asked to run again at " << nextDeadline_ << " us, not after now ("
-                    << now_ << " us)";
-      return false;
-    }
+bool InProcessBus::checked(replay::VirtualClock::Outcome outcome) {
+  if (outcome == replay::VirtualClock::Outcome::kOk) {
+    return true;
   }
+  ADD_FAILURE() << "process() asked to run again at " << clock_.failedDeadline()
+                << " us, not after now (" << clock_.now() << " us)";
+  return false;
+}
+
+bool InProcessBus::runProcess() {
+  return checked(clock_.runProcess([this](Microseconds now) { return target_->process(now); }));
 }
 
 void InProcessBus::send(const CanFrame& frame) {
   NoAllocationScope scope;
-  target_->onFrame(frame, now_);
+  target_->onFrame(frame, clock_.now());
   runProcess();
 }
 
@@ -69,19 +75,12 @@ bool InProcessBus::receive(CanFrame* frame, int timeoutMs) {
 
 void InProcessBus::advance(Microseconds microseconds) {
   NoAllocationScope scope;
-  const Microseconds end = now_ + microseconds;
-  while (nextDeadline_ <= end) {
-    now_ = nextDeadline_ > now_ ? nextDeadline_ : now_;
-    if (!runProcess()) {
-      break;
-    }
-  }
-  now_ = end;
-  runProcess();
+  checked(clock_.advance(microseconds,
+                         [this](Microseconds now) { return target_->process(now); }));
 }
 
 void InProcessBus::wait(uint64_t milliseconds) {
-  advance(milliseconds * 1000U);
+  advance(static_cast<Microseconds>(milliseconds * 1000U));
 }
 
 }  // namespace costa::test

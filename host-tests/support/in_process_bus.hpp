@@ -8,11 +8,14 @@
 #include "costa/port/memory/recording_can.hpp"
 #include "device_target.hpp"
 #include "transcript_player.hpp"
+#include "virtual_clock.hpp"
 
 namespace costa::test {
 
-/// Creates the device by its costa-slave name and powers it on at virtual time 0. Every call
-/// into the device runs inside a NoAllocationScope.
+/// Creates the device by its costa-slave name and powers it on at virtual time powerOnTime()
+/// (0, or COSTA_TEST_CLOCK_START from the environment, so that a whole test run can cross the
+/// wrap of the 32-bit microsecond clock). Every call into the device runs inside a
+/// NoAllocationScope.
 class InProcessBus : public TranscriptBus {
  public:
   InProcessBus(const std::string& device, int nodeId,
@@ -29,7 +32,12 @@ class InProcessBus : public TranscriptBus {
 
   /// Advances virtual time by `microseconds`, running every deadline on the way.
   void advance(Microseconds microseconds);
-  Microseconds now() const { return now_; }
+  Microseconds now() const { return clock_.now(); }
+  /// Virtual time elapsed since power-on.
+  Microseconds elapsed() const { return clock_.now() - powerOnTime(); }
+  /// The virtual time of power-on: COSTA_TEST_CLOCK_START (a number of microseconds) when the
+  /// environment has it, else 0.
+  static Microseconds powerOnTime();
 
   host::DeviceTarget& target() { return *target_; }
   Node& node() { return target_->node(); }
@@ -42,11 +50,11 @@ class InProcessBus : public TranscriptBus {
   /// Calls process() now, again while it asks for an immediate call. False (and a test
   /// failure) when it never stops asking, or asks for a time in the past.
   bool runProcess();
+  bool checked(replay::VirtualClock::Outcome outcome);
 
   port::RecordingCan can_;
   std::unique_ptr<host::DeviceTarget> target_;
-  Microseconds now_ = 0;
-  Microseconds nextDeadline_ = 0;
+  replay::VirtualClock clock_{powerOnTime()};
   size_t cursor_ = 0;
 };
 

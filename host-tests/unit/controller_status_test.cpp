@@ -7,13 +7,13 @@ namespace {
 using ControllerStatus = ExampleNodeTest;
 
 TEST_F(ControllerStatus, OverrunAndErrorPassive) {
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kRxOverrun, 0); });
+  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kRxOverrun, node.now()); });
   EXPECT_TRANSCRIPT("tx 081 [8] 10 81 11 00 00 00 00 00");
   EXPECT_EQ(value(0x1001, 0), 0U);  // an event, not a lasting condition
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kErrorPassive, 0); });
+  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kErrorPassive, node.now()); });
   EXPECT_TRANSCRIPT("tx 081 [8] 20 81 11 00 00 00 00 00");
   EXPECT_EQ(value(0x1001, 0), 0x11U);
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kErrorActive, 0); });
+  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kErrorActive, node.now()); });
   EXPECT_TRANSCRIPT("tx 081 [8] 00 00 00 00 00 00 00 00");
   EXPECT_EQ(bus_.node().statistics().rxOverruns, 1U);
 }
@@ -24,12 +24,12 @@ TEST_F(ControllerStatus, BusOffStopsTransmittingAndRecovers) {
     tx 581 [8] 60 17 10 00 00 00 00 00
     rx 000 [2] 01 01
   )");
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kBusOff, 0); });
+  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kBusOff, node.now()); });
   EXPECT_TRUE(bus_.node().busOff());
   EXPECT_EQ(bus_.node().state(), NmtState::kPreOperational);  // 0x1029:01 = 0
   EXPECT_TRANSCRIPT("wait 250\nsilence");
   EXPECT_EQ(bus_.node().statistics().busOffs, 1U);
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kBusOffRecovered, 0); });
+  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kBusOffRecovered, node.now()); });
   EXPECT_TRANSCRIPT(R"(
     tx 701 [1] 7F                        # what waited in the queue goes out first
     tx 701 [1] 7F
@@ -40,7 +40,7 @@ TEST_F(ControllerStatus, BusOffStopsTransmittingAndRecovers) {
 }
 
 TEST_F(ControllerStatus, AFullQueueDuringBusOffDropsAndCounts) {
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kBusOff, 0); });
+  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kBusOff, node.now()); });
   for (int i = 0; i < 40; ++i) {
     EXPECT_TRANSCRIPT("rx 601 [8] 40 00 20 00 00 00 00 00");
   }

@@ -170,7 +170,7 @@ TEST(FuzzWatchingCan, AFrameDuringBusOffIsNoted) {
   const std::unique_ptr<FuzzedDevice> device = createFuzzedDevice("example", can, {});
   can.watch(device.get());
   device->powerOn(0);
-  device->node().onControllerEvent(CanControllerEvent::kBusOff, 0);
+  device->node().onControllerEvent(CanControllerEvent::kBusOff, device->node().now());
   EXPECT_EQ(can.problem(), "");           // the boot-up before, nothing during
   can.tryTransmit(frame(0x701, {0x7F}));  // as a node that ignored bus-off would
   EXPECT_EQ(can.problem(), "frame 701 [1] 7F handed to a bus-off controller");

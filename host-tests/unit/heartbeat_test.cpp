@@ -64,12 +64,13 @@ TEST_F(Heartbeat, KeepsItsRhythmWhenProcessIsLate) {
     tx 581 [8] 60 17 10 00 00 00 00 00
   )");
   // The loop is called late: at 150 ms instead of 100 ms. The next heartbeat stays at 200 ms.
-  bus_.node().process(150000);
+  const Microseconds written = bus_.now();
+  bus_.node().process(written + 150000U);
   EXPECT_EQ(bus_.unread(), 1U);
-  EXPECT_EQ(bus_.node().process(150000), 200000U);
+  EXPECT_EQ(bus_.node().process(written + 150000U), written + 200000U);
   // Called very late (more than a period): the rhythm restarts from then.
-  bus_.node().process(1000000);
-  EXPECT_EQ(bus_.node().process(1000000), 1100000U);
+  bus_.node().process(written + 1000000U);
+  EXPECT_EQ(bus_.node().process(written + 1000000U), written + 1100000U);
 }
 
 TEST_F(Heartbeat, ReportsItsDeadlineToTheCaller) {

@@ -9,7 +9,9 @@
 #include "allocation_guard.hpp"
 #include "costa/lss_slave.hpp"
 #include "costa/port/memory/recording_can.hpp"
+#include "in_process_bus.hpp"
 #include "transcript_player.hpp"
+#include "virtual_clock.hpp"
 
 namespace costa::test {
 
@@ -30,7 +32,7 @@ class RecordingLssHost : public LssSlaveHost {
   void activateBitTiming(LssBitTiming timing) noexcept override {
     ++activations;
     activated = timing;
-    activatedAt = clock != nullptr ? *clock : 0U;
+    activatedAt = clock != nullptr ? clock->now() : 0U;
   }
 
   LssStoreResult storeConfiguration(uint8_t nodeId, LssBitTiming timing) noexcept override {
@@ -51,7 +53,7 @@ class RecordingLssHost : public LssSlaveHost {
 
   uint16_t supportedCiaIndices = (1U << 2U) | (1U << 3U);  // 500 and 250 kbit/s
   LssStoreResult storeResult = LssStoreResult::kStored;
-  const Microseconds* clock = nullptr;
+  const replay::VirtualClock* clock = nullptr;
   LssSlave* slave = nullptr;  ///< Reset on requestResetCommunication() when set.
 
   int questions = 0;
@@ -70,11 +72,11 @@ class LssBus : public TranscriptBus {
  public:
   static constexpr size_t kQueueDepth = 8;
 
-  LssBus() : tx_(can_, slots_, kQueueDepth), slave_(tx_, host_) { host_.clock = &now_; }
+  LssBus() : tx_(can_, slots_, kQueueDepth), slave_(tx_, host_) { host_.clock = &clock_; }
 
   void send(const CanFrame& frame) override {
     NoAllocationScope scope;
-    accepted_ = slave_.onFrame(frame, now_);
+    accepted_ = slave_.onFrame(frame, clock_.now());
   }
 
   bool receive(CanFrame* frame, int timeoutMs) override {
@@ -86,7 +88,9 @@ class LssBus : public TranscriptBus {
     return true;
   }
 
-  void wait(uint64_t milliseconds) override { advance(millisecondsToMicroseconds(milliseconds)); }
+  void wait(uint64_t milliseconds) override {
+    advance(millisecondsToMicroseconds(static_cast<uint32_t>(milliseconds)));
+  }
   bool checksTiming() const override { return true; }
   std::string simulate(const std::string& command) override {
     return "no simulation here: " + command;
@@ -95,18 +99,13 @@ class LssBus : public TranscriptBus {
   /// Advances virtual time, calling process() at every deadline on the way and at the end.
   void advance(Microseconds microseconds) {
     NoAllocationScope scope;
-    const Microseconds end = now_ + microseconds;
-    while (slave_.nextDeadline() <= end) {
-      const Microseconds deadline = slave_.nextDeadline();
-      now_ = deadline > now_ ? deadline : now_;
-      slave_.process(now_);
-      if (slave_.nextDeadline() == deadline) {
-        ADD_FAILURE() << "process(" << now_ << ") left its deadline " << deadline << " us due";
-        break;
-      }
-    }
-    now_ = end;
-    slave_.process(now_);
+    const auto outcome = clock_.advance(microseconds, [this](Microseconds now) {
+      slave_.process(now);
+      return slave_.nextDeadline();
+    });
+    EXPECT_EQ(outcome, replay::VirtualClock::Outcome::kOk)
+        << "process(" << clock_.now() << ") left its deadline " << clock_.failedDeadline()
+        << " us due";
   }
 
   void reset(const LssIdentity& identity, uint8_t activeNodeId, uint8_t pendingNodeId,
@@ -121,7 +120,7 @@ class LssBus : public TranscriptBus {
   port::RecordingCan& can() { return can_; }
   /// Frames the slave sent that receive() has not returned yet.
   size_t unread() const { return can_.count() - cursor_; }
-  Microseconds now() const { return now_; }
+  Microseconds now() const { return clock_.now(); }
   /// What onFrame() returned for the last frame sent.
   bool accepted() const { return accepted_; }
 
@@ -132,7 +131,7 @@ class LssBus : public TranscriptBus {
   TransmitPath tx_;
   RecordingLssHost host_;
   LssSlave slave_;
-  Microseconds now_ = 0;
+  replay::VirtualClock clock_{InProcessBus::powerOnTime()};
   bool accepted_ = false;
 };
 

@@ -19,10 +19,10 @@ TEST_F(SlaveCountersTest, NothingLostAtStart) {
 }
 
 TEST_F(SlaveCountersTest, DropsOfTheNodeAndErrorFramesOfTheSocket) {
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kRxOverrun, 0); });
+  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kRxOverrun, node.now()); });
   EXPECT_TRANSCRIPT("tx 081 [8] 10 81 11 00 00 00 00 00");
   withNode([](Node& node) {
-    node.onControllerEvent(CanControllerEvent::kBusOff, 0);
+    node.onControllerEvent(CanControllerEvent::kBusOff, node.now());
     for (uint16_t i = 1; i <= 10; ++i) {  // 8 fit the EMCY queue; they wait for the bus
       node.signalError(static_cast<uint16_t>(0xFF00U + i), kErrorManufacturer);
     }

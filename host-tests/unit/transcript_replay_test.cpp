@@ -309,7 +309,7 @@ class ScriptedDeadlines final : public replay::ReplayDevice {
 TEST(VirtualBus, RunsEveryDeadlineOnTheWayAtItsTime) {
   ScriptedDeadlines device({100000, 100000, 200000, 400000});
   replay::FrameRecorder recorder;
-  replay::VirtualBus bus(device, recorder);
+  replay::VirtualBus bus(device, recorder, 0);
   ASSERT_TRUE(bus.powerOn());  // asks for 100 ms
   ASSERT_TRUE(bus.wait(250));  // 100 ms (asks for 100 ms again: immediate), 200 ms, then 250 ms
   EXPECT_EQ(bus.now(), 250000U);
@@ -321,7 +321,7 @@ TEST(VirtualBus, RunsEveryDeadlineOnTheWayAtItsTime) {
 TEST(VirtualBus, FailsOnADeadlineInThePast) {
   ScriptedDeadlines device({100000, 50000});
   replay::FrameRecorder recorder;
-  replay::VirtualBus bus(device, recorder);
+  replay::VirtualBus bus(device, recorder, 0);
   ASSERT_TRUE(bus.powerOn());
   EXPECT_FALSE(bus.wait(100));
   EXPECT_STREQ(bus.failure(),
@@ -331,7 +331,7 @@ TEST(VirtualBus, FailsOnADeadlineInThePast) {
 TEST(VirtualBus, FailsOnEndlessImmediateDeadlines) {
   ScriptedDeadlines device(std::vector<Microseconds>(1001, 0));
   replay::FrameRecorder recorder;
-  replay::VirtualBus bus(device, recorder);
+  replay::VirtualBus bus(device, recorder, 0);
   EXPECT_FALSE(bus.powerOn());
   EXPECT_STREQ(bus.failure(), "process() asked to run again at 0 us, not after now (0 us)");
   EXPECT_EQ(device.calls.size(), 1002U);  // start, then 1 + 1000 immediate runs

@@ -30,7 +30,7 @@ EmcyProducer::EmcyProducer(od::ObjectDictionary& dictionary, const EmcyProfile& 
 void EmcyProducer::onResetCommunication() noexcept {
   pendingHead_ = 0;
   pendingCount_ = 0;
-  nextAllowed_ = 0;
+  nextAllowed_ = kNever;
   publishRegister();
 }
 
@@ -151,7 +151,7 @@ void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
     }
   }
   ++pendingCount_;
-  clock_.schedule(nextAllowed_);
+  clock_.schedule(nextAllowed_ == kNever ? clock_.now : nextAllowed_);
 }
 
 uint32_t EmcyProducer::cobId() const noexcept {
@@ -159,6 +159,9 @@ uint32_t EmcyProducer::cobId() const noexcept {
 }
 
 void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) noexcept {
+  if (reached(now, nextAllowed_)) {
+    nextAllowed_ = kNever;  // the inhibit time is over
+  }
   if (state != NmtState::kPreOperational && state != NmtState::kOperational) {
     return;
   }
@@ -167,8 +170,9 @@ void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) n
     pendingCount_ = 0;  // EMCY not valid: nothing is produced
     return;
   }
-  const Microseconds inhibit = dictionary_.readUnsigned(kInhibitIndex, 0, 0) * kHundredMicroseconds;
-  while (pendingCount_ != 0U && now >= nextAllowed_) {
+  const auto inhibit =
+      static_cast<uint32_t>(dictionary_.readUnsigned(kInhibitIndex, 0, 0)) * kHundredMicroseconds;
+  while (pendingCount_ != 0U && nextAllowed_ == kNever) {
     CanFrame frame;
     frame.id = cob & 0x7FFU;
     frame.dlc = 8;
@@ -178,16 +182,21 @@ void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) n
     tx.send(frame);
     pendingHead_ = pendingHead_ + 1U == pendingCapacity_ ? 0U : pendingHead_ + 1U;
     --pendingCount_;
-    nextAllowed_ = now + inhibit;
+    if (inhibit != 0U) {
+      nextAllowed_ = at(now, inhibit);
+    }
   }
 }
 
 Microseconds EmcyProducer::nextDeadline(NmtState state) const noexcept {
+  if (nextAllowed_ != kNever) {
+    return nextAllowed_;  // the end of the inhibit time: a waiting EMCY leaves, or it expires
+  }
   if (pendingCount_ == 0U ||
       (state != NmtState::kPreOperational && state != NmtState::kOperational)) {
     return kNever;
   }
-  return nextAllowed_;
+  return clock_.now;
 }
 
 AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,

@@ -43,7 +43,7 @@ HeartbeatConsumer::Event HeartbeatConsumer::onHeartbeat(uint8_t nodeId, uint8_t 
     }
     monitor.active = true;
     monitor.lastState = state;
-    monitor.deadline = now + monitor.time;
+    monitor.deadline = at(now, monitor.time);
     if (monitor.timedOut) {
       monitor.timedOut = false;
       if (event.kind == EventKind::kNone) {
@@ -57,7 +57,7 @@ HeartbeatConsumer::Event HeartbeatConsumer::onHeartbeat(uint8_t nodeId, uint8_t 
 HeartbeatConsumer::Event HeartbeatConsumer::process(Microseconds now) noexcept {
   for (size_t i = 0; i < count_; ++i) {
     HeartbeatMonitor& monitor = monitors_[i];
-    if (monitor.active && !monitor.timedOut && now >= monitor.deadline) {
+    if (monitor.active && !monitor.timedOut && reached(now, monitor.deadline)) {
       monitor.timedOut = true;
       return Event{EventKind::kTimeout, monitor.nodeId, static_cast<uint8_t>(i + 1U)};
     }

@@ -6,17 +6,17 @@
 namespace costa {
 
 void HeartbeatProducer::restart(Microseconds now) noexcept {
-  restartWith(now, dictionary_.readUnsigned(kIndex, 0, 0));
+  restartWith(now, static_cast<uint32_t>(dictionary_.readUnsigned(kIndex, 0, 0)));
 }
 
-void HeartbeatProducer::restartWith(Microseconds now, uint64_t periodMs) noexcept {
+void HeartbeatProducer::restartWith(Microseconds now, uint32_t periodMs) noexcept {
   period_ = millisecondsToMicroseconds(periodMs);
-  next_ = period_ == 0U ? kNever : now + period_;
+  next_ = period_ == 0U ? kNever : at(now, period_);
   clock_.schedule(next_);
 }
 
 void HeartbeatProducer::process(Microseconds now, NmtState state) noexcept {
-  if (next_ == kNever || now < next_) {
+  if (!reached(now, next_)) {
     return;
   }
   CanFrame frame;
@@ -24,9 +24,9 @@ void HeartbeatProducer::process(Microseconds now, NmtState state) noexcept {
   frame.dlc = 1;
   frame.data[0] = static_cast<uint8_t>(state);
   tx_.send(frame);
-  next_ += period_;
-  if (next_ <= now) {  // late by more than a period: keep the rhythm from now on
-    next_ = now + period_;
+  next_ = at(next_, period_);
+  if (!before(now, next_)) {  // late by more than a period: keep the rhythm from now on
+    next_ = at(now, period_);
   }
 }
 
@@ -34,7 +34,7 @@ AbortCode HeartbeatProducer::write(od::ObjectDictionary& dictionary, const od::E
                                    const uint8_t* data, size_t length) noexcept {
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
-    restartWith(clock_.now, loadLittleEndian(data, length));  // the value just written
+    restartWith(clock_.now, static_cast<uint32_t>(loadLittleEndian(data, length)));  // the value just written
   }
   return written;
 }

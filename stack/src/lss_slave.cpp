@@ -164,16 +164,16 @@ void LssSlave::configureBitTiming(LssBitTiming timing) noexcept {
 void LssSlave::activateBitTiming(uint16_t delayMs, Microseconds now) noexcept {
   const Microseconds delay = millisecondsToMicroseconds(delayMs);
   switchPhase_ = SwitchPhase::kBeforeSwitch;
-  switchAt_ = now + delay;
-  resumeAt_ = switchAt_ + delay;
+  switchAt_ = at(now, delay);
+  resumeAt_ = at(switchAt_, delay);
 }
 
 void LssSlave::process(Microseconds now) noexcept {
-  if (switchPhase_ == SwitchPhase::kBeforeSwitch && now >= switchAt_) {
+  if (switchPhase_ == SwitchPhase::kBeforeSwitch && reached(now, switchAt_)) {
     switchPhase_ = SwitchPhase::kAfterSwitch;
     host_.activateBitTiming(pendingBitTiming_);
   }
-  if (switchPhase_ == SwitchPhase::kAfterSwitch && now >= resumeAt_) {
+  if (switchPhase_ == SwitchPhase::kAfterSwitch && reached(now, resumeAt_)) {
     switchPhase_ = SwitchPhase::kIdle;
   }
 }

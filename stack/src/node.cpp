@@ -56,7 +56,7 @@ void Node::flushTx() noexcept {
 }
 
 void Node::start(Microseconds now) noexcept {
-  clock_.advance(now);
+  clock_.start(now);
   nmt_.powerOn();
 }
 

@@ -9,12 +9,23 @@ void NodeGuarding::reset(uint8_t nodeId, uint8_t toggleStart) noexcept {
   toggle_ = static_cast<uint8_t>(toggleStart & 1U);
   guarded_ = false;
   expired_ = false;
-  deadline_ = kNever;
+  life_.stop();
 }
 
-Microseconds NodeGuarding::lifeTime() const noexcept {
-  return millisecondsToMicroseconds(dictionary_.readUnsigned(kGuardTimeIndex, 0, 0)) *
+uint64_t NodeGuarding::lifeTime() const noexcept {
+  // Up to 65,535 ms x 255: more than LongTimer's steps, as CiA 301 allows.
+  return uint64_t{1000} * dictionary_.readUnsigned(kGuardTimeIndex, 0, 0) *
          dictionary_.readUnsigned(kLifeTimeFactorIndex, 0, 0);
+}
+
+void NodeGuarding::restartLife(Microseconds now) noexcept {
+  const uint64_t life = lifeTime();
+  if (life == 0U) {
+    life_.stop();
+  } else {
+    life_.start(now, life);
+    clock_.schedule(life_.next());
+  }
 }
 
 NodeGuarding::Event NodeGuarding::onRequest(NmtState state, Microseconds now) noexcept {
@@ -25,9 +36,7 @@ NodeGuarding::Event NodeGuarding::onRequest(NmtState state, Microseconds now) no
   tx_.send(reply);
   toggle_ ^= 1U;
   guarded_ = true;
-  const Microseconds life = lifeTime();
-  deadline_ = life == 0U ? kNever : now + life;
-  clock_.schedule(deadline_);
+  restartLife(now);
   if (expired_) {
     expired_ = false;
     return Event::kResumed;
@@ -36,7 +45,7 @@ NodeGuarding::Event NodeGuarding::onRequest(NmtState state, Microseconds now) no
 }
 
 NodeGuarding::Event NodeGuarding::process(Microseconds now) noexcept {
-  if (!guarded_ || expired_ || deadline_ == kNever || now < deadline_) {
+  if (!guarded_ || expired_ || !life_.fired(now)) {
     return Event::kNone;
   }
   expired_ = true;
@@ -47,9 +56,7 @@ AbortCode NodeGuarding::write(od::ObjectDictionary& dictionary, const od::EntryR
                               const uint8_t* data, size_t length) noexcept {
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone && guarded_ && !expired_) {
-    const Microseconds life = lifeTime();
-    deadline_ = life == 0U ? kNever : clock_.now + life;
-    clock_.schedule(deadline_);
+    restartLife(clock_.now);
   }
   return written;
 }

@@ -127,7 +127,7 @@ Microseconds PdoEngine::nextDeadline() const noexcept {
     next = earliest(next, rpdos_[i].nextDeadline());
   }
   for (size_t i = 0; i < tpdoCount_; ++i) {
-    next = earliest(next, tpdos_[i].nextDeadline());
+    next = earliest(next, tpdos_[i].nextDeadline(context_.clock.now));
   }
   return next;
 }

@@ -67,7 +67,7 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
 }
 
 void RpdoChannel::restartDeadline(PdoContext& context, Microseconds now) noexcept {
-  deadline_ = now + millisecondsToMicroseconds(eventTimerMs_);
+  deadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
   context.clock.schedule(deadline_);
   if (timedOut_) {
     timedOut_ = false;
@@ -96,7 +96,7 @@ bool RpdoChannel::applyChecked(PdoContext& context, const uint8_t* data) noexcep
 }
 
 void RpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
-  if (deadline_ != kNever && !timedOut_ && now >= deadline_) {
+  if (!timedOut_ && reached(now, deadline_)) {
     timedOut_ = true;
     deadline_ = kNever;
     context.emcy.raise(kEmcyTimeout, source(), kErrorCommunication);

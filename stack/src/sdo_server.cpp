@@ -96,7 +96,7 @@ Microseconds SdoServer::nextDeadline() const noexcept {
 
 void SdoServer::process(Microseconds now) noexcept {
   lastCall_ = now;
-  if (state_ != State::kIdle && now >= deadline_) {
+  if (state_ != State::kIdle && reached(now, deadline_)) {
     abortTransfer(AbortCode::kTimeout);
     return;
   }
@@ -149,7 +149,7 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
   }
   state_ = State::kDownloadSegments;
   toggle_ = 0;
-  deadline_ = now + timeout_;
+  deadline_ = at(now, timeout_);
   const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
   respond(response);
 }
@@ -270,7 +270,7 @@ void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexce
     abortTransfer(appended);
     return;
   }
-  deadline_ = now + timeout_;
+  deadline_ = at(now, timeout_);
   if ((request[0] & 0x01U) != 0U) {
     finishDownload();
     return;
@@ -311,7 +311,7 @@ void SdoServer::answerUpload(const uint8_t* request, size_t size, Microseconds n
   done_ = 0;
   toggle_ = 0;
   state_ = State::kUploadSegments;
-  deadline_ = now + timeout_;
+  deadline_ = at(now, timeout_);
   response[0] = kScsInitiateUploadResponse | 0x01U;
   storeLittleEndian(response + 4, size, 4);
   respond(response);
@@ -339,7 +339,7 @@ void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept
     endTransfer(AbortCode::kNone);
   } else {
     toggle_ ^= 1U;
-    deadline_ = now + timeout_;
+    deadline_ = at(now, timeout_);
   }
 }
 

@@ -44,7 +44,7 @@ void SdoServer::initiateBlockDownload(const uint8_t* request, Microseconds now) 
     return;
   }
   state_ = State::kBlockDownload;
-  deadline_ = now + timeout_;
+  deadline_ = at(now, timeout_);
 }
 
 void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) noexcept {
@@ -76,7 +76,7 @@ void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) no
   }
   blockUpload_.start(request, size);
   state_ = State::kBlockUpload;
-  deadline_ = now + timeout_;
+  deadline_ = at(now, timeout_);
 }
 
 void SdoServer::continueBlock(const uint8_t* request, Microseconds now) noexcept {
@@ -95,7 +95,7 @@ void SdoServer::afterBlockStep(AbortCode result, bool finished, Microseconds now
   } else if (finished) {
     endTransfer(AbortCode::kNone);
   } else {
-    deadline_ = now + timeout_;
+    deadline_ = at(now, timeout_);
   }
 }
 

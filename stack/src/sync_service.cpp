@@ -11,12 +11,18 @@ void SyncService::configure(Microseconds now) noexcept {
   const auto cob = static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, 0x080));
   canId_ = cob & 0x7FFU;
   producer_ = (cob & 0x40000000U) != 0U;
-  period_ = dictionary_.readUnsigned(kPeriodIndex, 0, 0);
-  window_ = dictionary_.readUnsigned(kWindowIndex, 0, 0);
+  period_ = static_cast<uint32_t>(dictionary_.readUnsigned(kPeriodIndex, 0, 0));
+  // A window longer than the stack's longest delay (35 min) acts as that long.
+  const auto window = static_cast<uint32_t>(dictionary_.readUnsigned(kWindowIndex, 0, 0));
+  window_ = window < kLongestDelay ? window : kLongestDelay;
   overflow_ = static_cast<uint8_t>(dictionary_.readUnsigned(kOverflowIndex, 0, 0));
   counter_ = 1;
-  next_ = producer_ && period_ != 0U ? now + period_ : kNever;
-  clock_.schedule(next_);
+  if (producer_ && period_ != 0U) {
+    timer_.start(now, period_);
+    clock_.schedule(timer_.next());
+  } else {
+    timer_.stop();
+  }
   routes_.invalidate();
 }
 
@@ -38,13 +44,12 @@ bool SyncService::onFrame(const CanFrame& frame, Microseconds now, SyncEvent* ev
 }
 
 bool SyncService::process(Microseconds now, bool allowed, SyncEvent* event) noexcept {
-  if (!producer_ || next_ == kNever || now < next_) {
+  if (!producer_ || !timer_.fired(now)) {
     return false;
   }
-  next_ += period_;
-  if (next_ <= now) {
-    next_ = now + period_;
-  }
+  // The next SYNC one period after this one was due; late by a period or more: from now.
+  const Microseconds due = timer_.due();
+  timer_.start(now - due >= period_ ? now : due, period_);
   if (!allowed) {
     return false;
   }

@@ -39,15 +39,15 @@ void TpdoChannel::start(PdoContext& context, Microseconds now, bool initialEvent
   waitingForStart_ = syncStart_ != 0U;
   updateSyncPeriod();
   sampledValid_ = false;
-  inhibitUntil_ = 0;
+  inhibitUntil_ = kNever;
   event_ = false;
   eventDeadline_ = kNever;
   if (eventDriven()) {
     event_ = initialEvent;
     if (eventTimerMs_ != 0U) {
-      eventDeadline_ = now + millisecondsToMicroseconds(eventTimerMs_);
+      eventDeadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
     }
-    context.clock.schedule(nextDeadline());
+    context.clock.schedule(nextDeadline(now));
   }
 }
 
@@ -61,7 +61,7 @@ void TpdoChannel::stop() noexcept {
 void TpdoChannel::signalEvent(NodeClock& clock) noexcept {
   if (running_ && (type_ == 0U || eventDriven())) {
     event_ = true;
-    clock.schedule(nextDeadline());
+    clock.schedule(nextDeadline(clock.now));
   }
 }
 
@@ -112,33 +112,35 @@ void TpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
   if (!running_ || !valid_ || !eventDriven()) {
     return;
   }
-  if (eventDeadline_ != kNever && now >= eventDeadline_) {
+  if (reached(now, eventDeadline_)) {
     event_ = true;
   }
-  if (event_ && now >= inhibitUntil_) {
+  if (reached(now, inhibitUntil_)) {
+    inhibitUntil_ = kNever;  // the inhibit time is over
+  }
+  if (event_ && inhibitUntil_ == kNever) {
     event_ = false;
     sendCurrent(context, now, kNever);
   }
 }
 
-Microseconds TpdoChannel::nextDeadline() const noexcept {
+Microseconds TpdoChannel::nextDeadline(Microseconds now) const noexcept {
   if (!running_ || !valid_ || !eventDriven()) {
     return kNever;
   }
-  Microseconds next = eventDeadline_;
-  if (event_) {
-    next = earliest(next, inhibitUntil_);
-  }
-  return next;
+  // The end of an inhibit time is a deadline too: it expires there.
+  const Microseconds next = earliest(eventDeadline_, inhibitUntil_);
+  return event_ && inhibitUntil_ == kNever ? now : next;
 }
 
 void TpdoChannel::restartTimers(PdoContext& context, Microseconds now) noexcept {
   if (!eventDriven()) {
     return;  // the inhibit time and the event timer are those of event-driven transmission
   }
-  inhibitUntil_ = now + static_cast<Microseconds>(inhibit_) * kHundredMicroseconds;
+  inhibitUntil_ = inhibit_ == 0U ? kNever : at(now, inhibit_ * kHundredMicroseconds);
+  context.clock.schedule(inhibitUntil_);
   if (eventTimerMs_ != 0U) {
-    eventDeadline_ = now + millisecondsToMicroseconds(eventTimerMs_);
+    eventDeadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
     context.clock.schedule(eventDeadline_);
   }
 }

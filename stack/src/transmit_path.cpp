@@ -5,7 +5,7 @@ namespace costa {
 void TransmitPath::flush(Microseconds now) noexcept {
   while (!queue_.empty() && gates_ == 0U) {
     const QueuedFrame& queued = queue_.front();
-    if (queued.expiry != kNever && now > queued.expiry) {
+    if (queued.expiry != kNever && before(queued.expiry, now)) {
       queue_.expireFront();
       continue;
     }

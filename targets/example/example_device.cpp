@@ -18,7 +18,7 @@ ExampleDevice::ExampleDevice(Node& node, uint32_t serialNumber) noexcept
 }
 
 void ExampleDevice::onResetApplication() noexcept {
-  epoch_ = node_.now();
+  restartUptime();
   scratchPadLength_ = 0;
 }
 
@@ -26,10 +26,19 @@ void ExampleDevice::onResetCommunication() noexcept {
   node_.dictionary().storeUnsigned(0x1018, 4, serialNumber_);
 }
 
+void ExampleDevice::restartUptime() noexcept {
+  secondStart_ = node_.now();
+  uptime_ = 0;
+}
+
 Microseconds ExampleDevice::process(Microseconds now) noexcept {
-  const Microseconds elapsed = now > epoch_ ? now - epoch_ : 0U;
-  node_.dictionary().storeUnsigned(kUptime, 0, elapsed / kSecond);
-  return epoch_ + (elapsed / kSecond + 1U) * kSecond;
+  // Whole seconds counted one by one: the uptime goes on past the wrap of the 32-bit clock.
+  while (now - secondStart_ >= kSecond) {
+    secondStart_ += kSecond;
+    ++uptime_;
+  }
+  node_.dictionary().storeUnsigned(kUptime, 0, uptime_);
+  return at(secondStart_, kSecond);
 }
 
 AbortCode ExampleDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
@@ -46,7 +55,7 @@ AbortCode ExampleDevice::write(od::ObjectDictionary& dictionary, const od::Entry
       return AbortCode::kGeneral;
     }
     if (data[0] == kRestartUptime) {
-      epoch_ = node_.now();
+      restartUptime();
       dictionary.storeUnsigned(kUptime, 0, 0);
     }
   }

@@ -54,9 +54,12 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   size_t scratchPadLength() const noexcept { return scratchPadLength_; }
 
  private:
+  void restartUptime() noexcept;
+
   Node& node_;
   uint32_t serialNumber_;
-  Microseconds epoch_ = 0;
+  Microseconds secondStart_ = 0;  ///< start of the second being counted
+  uint32_t uptime_ = 0;           ///< whole seconds since the last reset application
   uint8_t scratchPad_[kScratchPadCapacity] = {};
   size_t scratchPadLength_ = 0;
   bool receiving_ = false;  ///< A download has started overwriting the scratch pad.

@@ -45,9 +45,10 @@ int main() {
   if (!can.start(kTiming.btr(), costa::firmware::stm32f4::kApb1ClockHz)) {
     halt();  // no acknowledge from the controller, or the bus never went idle
   }
-  target.start(clock.nowMicroseconds());
+  // The node takes the low 32 bits of the clock and handles their wrap (costa/time.hpp).
+  target.start(static_cast<costa::Microseconds>(clock.nowMicroseconds()));
   for (;;) {
-    const costa::Microseconds now = clock.nowMicroseconds();
+    const auto now = static_cast<costa::Microseconds>(clock.nowMicroseconds());
     for (const costa::CanControllerEvent event : can.poll()) {
       target.node().onControllerEvent(event, now);
     }

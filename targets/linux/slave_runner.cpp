@@ -136,7 +136,7 @@ class TracedBitRate final : public CanBitRateControl {
 };
 
 int timeoutMilliseconds(Microseconds deadline, Microseconds now, bool txPending) {
-  Microseconds wait = deadline <= now ? 0U : deadline - now;
+  Microseconds wait = deadline == kNever ? kNever : reached(now, deadline) ? 0U : deadline - now;
   if (txPending && wait > 1000U) {
     wait = 1000U;  // the controller refused frames: offer them again soon
   }
@@ -166,6 +166,11 @@ sigset_t catchStopSignals() {
   return waiting;
 }
 
+/// The node's time: the low 32 bits of the monotonic clock (the node handles their wrap).
+Microseconds nodeTime(port::LinuxMonotonicClock& clock) {
+  return static_cast<Microseconds>(clock.nowMicroseconds());
+}
+
 /// Passes every frame the socket holds to the target, and the controller events of error
 /// frames to its node.
 void receiveFrames(port::SocketCanPort& socket, Tracer& tracer, DeviceTarget& target,
@@ -176,11 +181,11 @@ void receiveFrames(port::SocketCanPort& socket, Tracer& tracer, DeviceTarget& ta
     const auto received = socket.receive(&frame, &events);
     if (received == port::SocketCanPort::Received::kFrame) {
       tracer.line("rx", frame);
-      target.onFrame(frame, clock.nowMicroseconds());
+      target.onFrame(frame, nodeTime(clock));
     } else if (received == port::SocketCanPort::Received::kErrorFrame) {
       tracer.errorFrame(events);
       for (const CanControllerEvent event : events) {
-        target.node().onControllerEvent(event, clock.nowMicroseconds());
+        target.node().onControllerEvent(event, nodeTime(clock));
       }
     } else {
       break;
@@ -219,15 +224,15 @@ int runSlave(const SlaveOptions& options) {
   }
 
   const sigset_t waiting = catchStopSignals();
-  target->start(clock.nowMicroseconds());
+  target->start(nodeTime(clock));
   std::fprintf(stderr, "costa-slave: %s on %s, node-id %u\n", options.device.c_str(),
                options.interfaceName.c_str(), target->node().nodeId());
 
   while (stopRequested == 0) {
-    const Microseconds now = clock.nowMicroseconds();
+    const Microseconds now = nodeTime(clock);
     const Microseconds deadline = target->process(now);
     const int timeout =
-        timeoutMilliseconds(deadline, clock.nowMicroseconds(), target->node().txPending());
+        timeoutMilliseconds(deadline, nodeTime(clock), target->node().txPending());
     pollfd descriptors[2] = {{socket.fd(), POLLIN, 0}, {control.fd(), POLLIN, 0}};
     const timespec wait{timeout / 1000, (timeout % 1000) * 1000000L};
     const nfds_t count = control.fd() >= 0 ? 2U : 1U;

@@ -87,9 +87,9 @@ void SoloDevice::publish(const DriveFeedback& feedback) noexcept {
 }
 
 Microseconds SoloDevice::process(Microseconds now) noexcept {
-  if (simulated_ + kStep <= now) {
+  if (now - simulated_ >= kStep) {  // elapsed time, right across the wrap of the clock
     const DriveCommand c = command();
-    while (simulated_ + kStep <= now) {
+    while (now - simulated_ >= kStep) {
       drive_.step(c, kStep);
       simulated_ += kStep;
     }
@@ -97,7 +97,7 @@ Microseconds SoloDevice::process(Microseconds now) noexcept {
     drive_.read(&feedback);
     publish(feedback);
   }
-  if (identifyAt_ != kNever && now >= identifyAt_) {
+  if (reached(now, identifyAt_)) {
     identifyAt_ = kNever;
     double resistance = 0;
     double inductance = 0;
@@ -106,7 +106,7 @@ Microseconds SoloDevice::process(Microseconds now) noexcept {
       storeSfxt(0x300E, inductance);
     }
   }
-  return earliest(simulated_ + kStep, identifyAt_);
+  return earliest(at(simulated_, kStep), identifyAt_);
 }
 
 AbortCode SoloDevice::prepareRead(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
@@ -149,7 +149,7 @@ AbortCode SoloDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef
       break;
     case 0x3007:
       if (value == 1U) {
-        identifyAt_ = node_.now() + kIdentificationTime;
+        identifyAt_ = at(node_.now(), kIdentificationTime);
       }
       break;
     case 0x3014:

@@ -109,7 +109,7 @@ class EmcyProducer : public ObjectHook {
   uint32_t lost_ = 0;
   uint32_t conditionsFull_ = 0;
   uint8_t nodeId_ = 0;
-  Microseconds nextAllowed_ = 0;
+  Microseconds nextAllowed_ = kNever;  ///< end of the inhibit time of the last EMCY sent
 };
 
 }  // namespace costa

@@ -22,7 +22,7 @@ class HeartbeatProducer : public ObjectHook {
   /// (Re)starts production from 0x1017: the first heartbeat one period after `now`. 0 disables.
   void restart(Microseconds now) noexcept;
   /// restart() with the period `periodMs` (the value of 0x1017).
-  void restartWith(Microseconds now, uint64_t periodMs) noexcept;
+  void restartWith(Microseconds now, uint32_t periodMs) noexcept;
   void stop() noexcept { next_ = kNever; }
 
   /// Sends a heartbeat carrying `state` when due.

@@ -19,6 +19,9 @@
 // A burst of frames costs one onFrame() each and one process() after them. Frames the controller
 // refused wait in the transmit queue until flushTx() (or a process() that runs due work).
 //
+// `now` is a free-running 32-bit microsecond count that may wrap (costa/time.hpp); call
+// process() by the time it returns (never 35 minutes or more after it).
+//
 // Several nodes, with the same or different dictionaries, may live in one program.
 #pragma once
 
@@ -92,7 +95,7 @@ class Node {
     if (tx_.pending()) {
       flushTx();
     }
-    return clock_.now < clock_.next ? clock_.next : runDue();
+    return clock_.due() ? runDue() : clock_.next;
   }
   /// Offers queued frames to the controller again (after it signalled room); a block upload
   /// that waited for room continues at the next process(). O(frames sent).

@@ -15,17 +15,19 @@ struct NodeClock {
   Microseconds now = 0;
   Microseconds next = kNever;
 
+  /// The time of power-on: the clock starts there, whatever its previous value.
+  void start(Microseconds time) noexcept { now = time; }
+  /// The time of the call being handled; a time earlier than the last one (a caller whose
+  /// clock went back) leaves it as it is.
   void advance(Microseconds time) noexcept {
-    if (time > now) {
+    if (before(now, time)) {
       now = time;
     }
   }
-  /// Something may be due at `at` (kNever: nothing). O(1).
-  void schedule(Microseconds at) noexcept {
-    if (at < next) {
-      next = at;
-    }
-  }
+  /// Something may be due at `deadline` (kNever: nothing). O(1).
+  void schedule(Microseconds deadline) noexcept { next = earliest(next, deadline); }
+  /// True when `next` has come: process() has work.
+  bool due() const noexcept { return reached(now, next); }
 };
 
 }  // namespace costa

@@ -30,7 +30,7 @@ class NodeGuarding : public ObjectHook {
   Event onRequest(NmtState state, Microseconds now) noexcept;
   /// Returns kLifeTimeExpired once when no request came within the life time.
   Event process(Microseconds now) noexcept;
-  Microseconds nextDeadline() const noexcept { return expired_ ? kNever : deadline_; }
+  Microseconds nextDeadline() const noexcept { return expired_ ? kNever : life_.next(); }
   bool expired() const noexcept { return expired_; }
 
   /// 0x100C/0x100D writes restart the life time with the new values.
@@ -38,7 +38,8 @@ class NodeGuarding : public ObjectHook {
                   size_t length) noexcept override;
 
  private:
-  Microseconds lifeTime() const noexcept;
+  uint64_t lifeTime() const noexcept;
+  void restartLife(Microseconds now) noexcept;
 
   od::ObjectDictionary& dictionary_;
   TransmitPath& tx_;
@@ -47,7 +48,7 @@ class NodeGuarding : public ObjectHook {
   uint8_t toggle_ = 0;
   bool guarded_ = false;
   bool expired_ = false;
-  Microseconds deadline_ = kNever;
+  LongTimer life_;  ///< the node life time, from the latest guarding request
 };
 
 }  // namespace costa

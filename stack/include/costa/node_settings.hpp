@@ -22,7 +22,8 @@ inline constexpr uint32_t kAllGroupsButLss = ~(groupBit(od::kGroupNone) | groupB
 struct NodeSettings {
   uint8_t nodeId = 1;       ///< 1..127, or 0xFF: no node-id yet (LSS only until configured).
   DeviceProfile profile{};  ///< Device-specific wire behaviour, one profile per service.
-  Microseconds sdoTimeout = millisecondsToMicroseconds(1000);  ///< Segmented transfer timeout.
+  /// Segmented and block transfer timeout (at most kLongestDelay).
+  Microseconds sdoTimeout = millisecondsToMicroseconds(1000);
   StaticPdoMappings staticPdoMappings{};  ///< Mappings of PDOs without a mapping object.
   /// Non-volatile storage of parameters (0x1010/0x1011) and of the LSS configuration; null: none.
   /// Without effect when parameter storage is compiled out (features::kParameterStorage).

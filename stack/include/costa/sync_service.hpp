@@ -48,7 +48,7 @@ class SyncService : public ObjectHook {
 
   /// Producer: sends the SYNC when due. Returns true (and fills `event`) when it sent one.
   bool process(Microseconds now, bool allowed, SyncEvent* event) noexcept;
-  Microseconds nextDeadline() const noexcept { return producer_ ? next_ : kNever; }
+  Microseconds nextDeadline() const noexcept { return producer_ ? timer_.next() : kNever; }
 
   bool producer() const noexcept { return producer_; }
   /// The SYNC CAN-ID (consumer and producer).
@@ -62,7 +62,7 @@ class SyncService : public ObjectHook {
 
  private:
   Microseconds windowEnd(Microseconds time) const noexcept {
-    return window_ == 0U ? kNever : time + window_;
+    return window_ == 0U ? kNever : at(time, window_);
   }
 
   od::ObjectDictionary& dictionary_;
@@ -72,12 +72,12 @@ class SyncService : public ObjectHook {
   FrameRouter& routes_;
   uint32_t canId_ = 0x080;
   bool producer_ = false;
-  Microseconds period_ = 0;
-  Microseconds window_ = 0;
+  uint32_t period_ = 0;  ///< µs, 0x1006
+  uint32_t window_ = 0;  ///< µs, 0x1007 (at most kLongestDelay)
   uint8_t overflow_ = 0;
   uint8_t counter_ = 0;       ///< producer's next counter value
   bool lengthError_ = false;  ///< EMCY 0x8240 raised
-  Microseconds next_ = kNever;
+  LongTimer timer_;  ///< the next SYNC this node produces
 };
 
 }  // namespace costa

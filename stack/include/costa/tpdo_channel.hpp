@@ -62,7 +62,8 @@ class TpdoChannel {
 
   /// Event-driven transmission: events and the event timer, within the inhibit time.
   void process(PdoContext& context, Microseconds now) noexcept;
-  Microseconds nextDeadline() const noexcept;
+  /// When process() has work: an event or the event timer, the end of the inhibit time.
+  Microseconds nextDeadline(Microseconds now) const noexcept;
 
  private:
   void onOtherSync(PdoContext& context, uint8_t counter, Microseconds now,
@@ -98,7 +99,7 @@ class TpdoChannel {
   bool waitingForStart_ = false;
   bool event_ = false;
   bool sampledValid_ = false;
-  Microseconds inhibitUntil_ = 0;
+  Microseconds inhibitUntil_ = kNever;  ///< end of the inhibit time of the last PDO sent
   Microseconds eventDeadline_ = kNever;
   PdoMap map_;
   uint8_t sampled_[PdoMap::kMaxBytes] = {};
