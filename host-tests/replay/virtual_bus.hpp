@@ -5,10 +5,10 @@
 #include <stdint.h>
 
 #include "costa/time.hpp"
-#include "virtual_clock.hpp"
 #include "fixed_text.hpp"
 #include "frame_recorder.hpp"
 #include "replay_device.hpp"
+#include "virtual_clock.hpp"
 
 namespace costa::replay {
 

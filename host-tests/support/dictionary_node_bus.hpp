@@ -62,8 +62,7 @@ class DictionaryNodeBus : public TranscriptBus {
   }
   void expectOk(replay::VirtualClock::Outcome outcome) {
     EXPECT_EQ(outcome, replay::VirtualClock::Outcome::kOk)
-        << "process() asked for " << clock_.failedDeadline() << " us at " << clock_.now()
-        << " us";
+        << "process() asked for " << clock_.failedDeadline() << " us at " << clock_.now() << " us";
   }
 
   port::RecordingCan can_;

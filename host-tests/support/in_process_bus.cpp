@@ -75,8 +75,7 @@ bool InProcessBus::receive(CanFrame* frame, int timeoutMs) {
 
 void InProcessBus::advance(Microseconds microseconds) {
   NoAllocationScope scope;
-  checked(clock_.advance(microseconds,
-                         [this](Microseconds now) { return target_->process(now); }));
+  checked(clock_.advance(microseconds, [this](Microseconds now) { return target_->process(now); }));
 }
 
 void InProcessBus::wait(uint64_t milliseconds) {

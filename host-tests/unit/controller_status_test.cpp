@@ -10,10 +10,12 @@ TEST_F(ControllerStatus, OverrunAndErrorPassive) {
   withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kRxOverrun, node.now()); });
   EXPECT_TRANSCRIPT("tx 081 [8] 10 81 11 00 00 00 00 00");
   EXPECT_EQ(value(0x1001, 0), 0U);  // an event, not a lasting condition
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kErrorPassive, node.now()); });
+  withNode(
+      [](Node& node) { node.onControllerEvent(CanControllerEvent::kErrorPassive, node.now()); });
   EXPECT_TRANSCRIPT("tx 081 [8] 20 81 11 00 00 00 00 00");
   EXPECT_EQ(value(0x1001, 0), 0x11U);
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kErrorActive, node.now()); });
+  withNode(
+      [](Node& node) { node.onControllerEvent(CanControllerEvent::kErrorActive, node.now()); });
   EXPECT_TRANSCRIPT("tx 081 [8] 00 00 00 00 00 00 00 00");
   EXPECT_EQ(bus_.node().statistics().rxOverruns, 1U);
 }
@@ -29,7 +31,8 @@ TEST_F(ControllerStatus, BusOffStopsTransmittingAndRecovers) {
   EXPECT_EQ(bus_.node().state(), NmtState::kPreOperational);  // 0x1029:01 = 0
   EXPECT_TRANSCRIPT("wait 250\nsilence");
   EXPECT_EQ(bus_.node().statistics().busOffs, 1U);
-  withNode([](Node& node) { node.onControllerEvent(CanControllerEvent::kBusOffRecovered, node.now()); });
+  withNode(
+      [](Node& node) { node.onControllerEvent(CanControllerEvent::kBusOffRecovered, node.now()); });
   EXPECT_TRANSCRIPT(R"(
     tx 701 [1] 7F                        # what waited in the queue goes out first
     tx 701 [1] 7F

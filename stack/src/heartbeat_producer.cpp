@@ -34,7 +34,8 @@ AbortCode HeartbeatProducer::write(od::ObjectDictionary& dictionary, const od::E
                                    const uint8_t* data, size_t length) noexcept {
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
-    restartWith(clock_.now, static_cast<uint32_t>(loadLittleEndian(data, length)));  // the value just written
+    restartWith(clock_.now,
+                static_cast<uint32_t>(loadLittleEndian(data, length)));  // the value just written
   }
   return written;
 }

@@ -231,8 +231,7 @@ int runSlave(const SlaveOptions& options) {
   while (stopRequested == 0) {
     const Microseconds now = nodeTime(clock);
     const Microseconds deadline = target->process(now);
-    const int timeout =
-        timeoutMilliseconds(deadline, nodeTime(clock), target->node().txPending());
+    const int timeout = timeoutMilliseconds(deadline, nodeTime(clock), target->node().txPending());
     pollfd descriptors[2] = {{socket.fd(), POLLIN, 0}, {control.fd(), POLLIN, 0}};
     const timespec wait{timeout / 1000, (timeout % 1000) * 1000000L};
     const nfds_t count = control.fd() >= 0 ? 2U : 1U;

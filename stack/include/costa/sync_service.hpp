@@ -77,7 +77,7 @@ class SyncService : public ObjectHook {
   uint8_t overflow_ = 0;
   uint8_t counter_ = 0;       ///< producer's next counter value
   bool lengthError_ = false;  ///< EMCY 0x8240 raised
-  LongTimer timer_;  ///< the next SYNC this node produces
+  LongTimer timer_;           ///< the next SYNC this node produces
 };
 
 }  // namespace costa
