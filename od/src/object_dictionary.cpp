@@ -140,11 +140,8 @@ size_t ObjectDictionary::valueSize(const EntryRef& ref) const noexcept {
   }
   if (ref.type() == DataType::kVisibleString) {
     const uint8_t* text = address(ref);
-    size_t length = 0;
-    while (length < ref.size() && text[length] != 0U) {
-      ++length;
-    }
-    return length;
+    const auto* end = static_cast<const uint8_t*>(__builtin_memchr(text, 0, ref.size()));
+    return end != nullptr ? static_cast<size_t>(end - text) : ref.size();
   }
   return ref.size();
 }

@@ -144,7 +144,7 @@ void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
   if (profile_.layout == EmcyLayout::kErrorRegisterInFourthByte) {
     slot.data[3] = registerValue;
   } else {
-    storeLittleEndian(slot.data, code, 2);
+    storeU16(slot.data, code);
     slot.data[2] = registerValue;
     for (size_t i = 0; manufacturer != nullptr && i < 5U; ++i) {
       slot.data[3U + i] = manufacturer[i];

@@ -210,7 +210,7 @@ void LssSlave::respondValue(uint8_t cs, uint32_t value) noexcept {
   frame.id = cob::kLssToMaster;
   frame.dlc = 8;
   frame.data[0] = cs;
-  storeLittleEndian(frame.data + 1, value, 4);
+  storeU32(frame.data + 1, value);
   tx_.send(frame);
 }
 

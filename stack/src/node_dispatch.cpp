@@ -73,23 +73,32 @@ void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
   if (router_.stale()) {
     buildRoutes();
   }
-  bool used = false;
-  if (frame.id - (cob::kErrorControlBase + 1U) < 127U) {
-    const uint8_t id = nmt_.nodeId();
-    used = id != cob::kLssUnconfigured && nmt_.state() != NmtState::kInitialising &&
-           errorControl_.onFrame(frame, id);
-  } else {
-    for (const RouteEntry* entry = router_.find(frame.id); entry != nullptr;
-         entry = router_.nextOfSameId(entry)) {
-      used = route(*entry, frame) || used;
-      if (router_.stale()) {
-        break;  // a reset rebuilt the table under our feet
-      }
-    }
-  }
+  // The usual frame has one route; frames of several routes and error control frames (which
+  // have none) go the longer way.
+  const RouteEntry* entry = router_.find(frame.id);
+  const bool used = entry != nullptr && !router_.shared() ? route(*entry, frame)
+                                                          : routeOther(entry, frame);
   if (!used) {
     ++framesIgnored_;
   }
+}
+
+bool Node::routeOther(const RouteEntry* entry, const CanFrame& frame) noexcept {
+  if (entry == nullptr) {
+    // 0x701..0x77F: heartbeats of other nodes and node guarding requests (CiA 301 restricts
+    // these CAN-IDs, so no other route uses them).
+    const uint8_t id = nmt_.nodeId();
+    return frame.id - (cob::kErrorControlBase + 1U) < 127U && id != cob::kLssUnconfigured &&
+           nmt_.state() != NmtState::kInitialising && errorControl_.onFrame(frame, id);
+  }
+  bool used = false;
+  for (; entry != nullptr; entry = router_.nextOfSameId(entry)) {
+    used = route(*entry, frame) || used;
+    if (router_.stale()) {
+      break;  // a reset rebuilt the table under our feet
+    }
+  }
+  return used;
 }
 
 void Node::handleSync(const SyncEvent& sync) noexcept {

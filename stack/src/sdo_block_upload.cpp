@@ -31,7 +31,7 @@ void SdoBlockUpload::start(const uint8_t* request, size_t size) noexcept {
   sent_ = 0;
   phase_ = Phase::kWaitStart;
   uint8_t response[8] = {kInitiateResponse, request[1], request[2], request[3]};
-  storeLittleEndian(response + 4, size, 4);
+  storeU32(response + 4, static_cast<uint32_t>(size));
   channel_.send(response);
 }
 

@@ -149,7 +149,7 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
   }
   state_ = State::kDownloadSegments;
   toggle_ = 0;
-  deadline_ = at(now, timeout_);
+  armTimeout(now);
   const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
   respond(response);
 }
@@ -199,20 +199,28 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
   lastCall_ = now;
   const uint8_t* request = frame.data;
   const auto ccs = static_cast<uint8_t>(request[0] >> 5U);
+  // The frequent requests first: the next segment of an upload, a new expedited transfer.
+  if (state_ == State::kUploadSegments && ccs == kCcsUploadSegment) {
+    return uploadSegment(request, now);
+  }
+  if (state_ != State::kIdle || (ccs != kCcsInitiateUpload && ccs != kCcsInitiateDownload)) {
+    return onOtherRequest(request, ccs, now);
+  }
+  if (ccs == kCcsInitiateUpload) {
+    initiateUpload(request, now);
+  } else {
+    initiateDownload(request, now);
+  }
+  return true;
+}
+
+bool SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept {
   if (isClientAbort(request)) {
     endTransfer(static_cast<AbortCode>(loadU32(request + 4)));
     return true;
   }
   switch (state_) {
-    case State::kIdle:
-      if (ccs == kCcsInitiateUpload) {
-        initiateUpload(request, now);
-      } else if (ccs == kCcsInitiateDownload) {
-        initiateDownload(request, now);
-      } else {
-        initiate(request, ccs, now);
-      }
-      break;
+    case State::kIdle: initiate(request, ccs, now); break;
     case State::kDownloadSegments:
       if (ccs == kCcsDownloadSegment) {
         downloadSegment(request, now);
@@ -220,22 +228,13 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
         abortTransfer(AbortCode::kCommandSpecifier);
       }
       break;
-    case State::kUploadSegments:
-      if (ccs == kCcsUploadSegment) {
-        uploadSegment(request, now);
-      } else {
-        abortTransfer(AbortCode::kCommandSpecifier);
-      }
-      break;
+    case State::kUploadSegments: abortTransfer(AbortCode::kCommandSpecifier); break;
     case State::kBlockDownload:
     case State::kBlockUpload:
       if constexpr (features::kSdoBlockTransfer) {
         continueBlock(request, now);
       }
       break;
-  }
-  if (state_ != State::kIdle) {
-    clock_.schedule(nextDeadline());  // a transfer runs: its timeout (or a burst) is due
   }
   return true;
 }
@@ -270,7 +269,7 @@ void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexce
     abortTransfer(appended);
     return;
   }
-  deadline_ = at(now, timeout_);
+  armTimeout(now);
   if ((request[0] & 0x01U) != 0U) {
     finishDownload();
     return;
@@ -311,36 +310,49 @@ void SdoServer::answerUpload(const uint8_t* request, size_t size, Microseconds n
   done_ = 0;
   toggle_ = 0;
   state_ = State::kUploadSegments;
-  deadline_ = at(now, timeout_);
+  armTimeout(now);
   response[0] = kScsInitiateUploadResponse | 0x01U;
-  storeLittleEndian(response + 4, size, 4);
+  storeU32(response + 4, static_cast<uint32_t>(size));
   respond(response);
 }
 
-void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept {
+bool SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept {
   const auto toggle = static_cast<uint8_t>((request[0] >> 4U) & 0x01U);
   if (toggle != toggle_) {
     abortTransfer(AbortCode::kToggleBit);
-    return;
+    return true;
   }
   const size_t remaining = size_ - done_;
-  const size_t count = remaining < kSegmentBytes ? remaining : kSegmentBytes;
   const bool last = remaining <= kSegmentBytes;
-  uint8_t response[8] = {static_cast<uint8_t>((static_cast<size_t>(toggle_) << 4U) |
-                                              ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U))};
-  const AbortCode read = reader_.read(done_, response + 1, count);
-  if (read != AbortCode::kNone) {
-    abortTransfer(read);
-    return;
+  const size_t count = last ? remaining : kSegmentBytes;
+  CanFrame response;
+  channel_.address(response);
+  response.data[0] = static_cast<uint8_t>((static_cast<size_t>(toggle_) << 4U) |
+                                          ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U));
+  const uint8_t* snapshot = reader_.snapshot();
+  if (snapshot != nullptr && !last) {
+    copyBytes(response.data + 1, snapshot + done_, kSegmentBytes);  // a whole segment
+  } else {
+    const AbortCode read = reader_.read(done_, response.data + 1, count);
+    if (read != AbortCode::kNone) {
+      abortTransfer(read);
+      return true;
+    }
   }
   done_ += count;
-  respond(response);
+  channel_.send(response);
   if (last) {
     endTransfer(AbortCode::kNone);
   } else {
     toggle_ ^= 1U;
-    deadline_ = at(now, timeout_);
+    armTimeout(now);
   }
+  return true;
+}
+
+void SdoServer::armTimeout(Microseconds now) noexcept {
+  deadline_ = at(now, timeout_);
+  clock_.schedule(deadline_);
 }
 
 void SdoServer::abortTransfer(AbortCode code) noexcept {

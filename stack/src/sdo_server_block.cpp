@@ -44,7 +44,7 @@ void SdoServer::initiateBlockDownload(const uint8_t* request, Microseconds now) 
     return;
   }
   state_ = State::kBlockDownload;
-  deadline_ = at(now, timeout_);
+  armTimeout(now);
 }
 
 void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) noexcept {
@@ -76,7 +76,10 @@ void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) no
   }
   blockUpload_.start(request, size);
   state_ = State::kBlockUpload;
-  deadline_ = at(now, timeout_);
+  armTimeout(now);
+  if (blockSegmentsReady()) {
+    clock_.schedule(now);
+  }
 }
 
 void SdoServer::continueBlock(const uint8_t* request, Microseconds now) noexcept {
@@ -87,6 +90,9 @@ void SdoServer::continueBlock(const uint8_t* request, Microseconds now) noexcept
     const AbortCode result = blockUpload_.onRequest(request);
     afterBlockStep(result, blockUpload_.finished(), now);
   }
+  if (blockSegmentsReady()) {
+    clock_.schedule(now);  // a sub-block to send: at once
+  }
 }
 
 void SdoServer::afterBlockStep(AbortCode result, bool finished, Microseconds now) noexcept {
@@ -95,7 +101,7 @@ void SdoServer::afterBlockStep(AbortCode result, bool finished, Microseconds now
   } else if (finished) {
     endTransfer(AbortCode::kNone);
   } else {
-    deadline_ = at(now, timeout_);
+    armTimeout(now);
   }
 }
 

@@ -41,11 +41,11 @@ void encodeImageHeader(const ImageHeader& header, uint8_t* out) noexcept {
   copyBytes(out, kImageMagic, kImageMagicSize);
   out[4] = header.formatVersion;
   out[5] = static_cast<uint8_t>(header.kind);
-  storeLittleEndian(out + 6, header.region, 2);
-  storeLittleEndian(out + 8, header.layout, 4);
-  storeLittleEndian(out + 12, header.location, 4);
-  storeLittleEndian(out + 16, header.payloadLength, 4);
-  storeLittleEndian(out + 20, header.sequence, 4);
+  storeU16(out + 6, header.region);
+  storeU32(out + 8, header.layout);
+  storeU32(out + 12, header.location);
+  storeU32(out + 16, header.payloadLength);
+  storeU32(out + 20, header.sequence);
 }
 
 SlotInfo inspectSlot(NvStorage& storage, size_t offset, size_t slotSize) noexcept {
@@ -135,7 +135,7 @@ bool ImageWriter::finish() noexcept {
     ok_ = false;
     return false;
   }
-  storeLittleEndian(header_ + kImageCrcOffset, crc_.value(), 4);
+  storeU32(header_ + kImageCrcOffset, crc_.value());
   // Everything but the magic first: the slot stays blank until the last byte of the magic.
   ok_ = storage_.write(slotOffset_ + kImageMagicSize, header_ + kImageMagicSize,
                        kImageHeaderSize - kImageMagicSize) &&

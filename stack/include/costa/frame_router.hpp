@@ -65,6 +65,8 @@ class FrameRouter {
     return next != slots_ + count_ && next->id == entry->id ? next : nullptr;
   }
 
+  /// Some CAN-ID has more than one route.
+  bool shared() const noexcept { return shared_; }
   /// The node's CAN-IDs changed: rebuild before the next lookup.
   void invalidate() noexcept { stale_ = true; }
   bool stale() const noexcept { return stale_; }

@@ -189,6 +189,8 @@ class Node {
   Microseconds runDue() noexcept;
   void buildRoutes() noexcept;
   COSTA_HOT_INLINE bool route(const RouteEntry& entry, const CanFrame& frame) noexcept;
+  /// A frame without a route (error control), or with several.
+  bool routeOther(const RouteEntry* entry, const CanFrame& frame) noexcept;
   void handleSync(const SyncEvent& sync) noexcept;
   bool preOrOperational() const noexcept {
     return nmt_.state() == NmtState::kPreOperational || nmt_.state() == NmtState::kOperational;

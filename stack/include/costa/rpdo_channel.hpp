@@ -79,7 +79,7 @@ class RpdoChannel {
 
  private:
   /// Writes `data` into the mapped entries, with the listeners' notifications around it.
-  bool apply(PdoContext& context, const uint8_t* data) noexcept {
+  COSTA_HOT_INLINE bool apply(PdoContext& context, const uint8_t* data) noexcept {
     if (!map_.plain()) {
       return applyChecked(context, data);
     }

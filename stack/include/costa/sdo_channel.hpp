@@ -44,7 +44,7 @@ class SdoChannel {
     }
     uint8_t data[8] = {0x80, static_cast<uint8_t>(index), static_cast<uint8_t>(index >> 8U),
                        subIndex};
-    storeLittleEndian(data + 4, static_cast<uint32_t>(code), 4);
+    storeU32(data + 4, static_cast<uint32_t>(code));
     send(data);
   }
 

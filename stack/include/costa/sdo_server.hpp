@@ -67,6 +67,11 @@ class SdoServer {
     kBlockUpload
   };
 
+  /// A request other than the frequent ones: aborts, download segments, block transfers, and
+  /// requests that do not fit the transfer's state. True.
+  bool onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
+  /// The deadline of the client's next request, from `now`; the node's clock is told.
+  void armTimeout(Microseconds now) noexcept;
   /// A request while no transfer runs: starts one, or aborts.
   void initiate(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
   COSTA_HOT_INLINE void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
@@ -75,7 +80,9 @@ class SdoServer {
   void answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept;
   /// The expedited answer to an upload of a numeric value of up to 4 bytes.
   COSTA_HOT_INLINE void answerExpedited(const uint8_t* request) noexcept;
-  void uploadSegment(const uint8_t* request, Microseconds now) noexcept;
+  /// The next segment of an upload. True (the frame was used), so that callers can return its
+  /// result at once.
+  bool uploadSegment(const uint8_t* request, Microseconds now) noexcept;
   void finishDownload() noexcept;
   bool isClientAbort(const uint8_t* request) const noexcept;
   // Block transfers (sdo_server_block.cpp, compiled only with features::kSdoBlockTransfer).

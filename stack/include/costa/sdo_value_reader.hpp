@@ -25,6 +25,9 @@ class SdoValueReader {
   /// streamed value ends before `offset + count` (it shrank during the transfer).
   AbortCode read(size_t offset, uint8_t* destination, size_t count) noexcept;
 
+  /// The snapshot of a value that is not streamed (its bytes in the SDO buffer), else null.
+  const uint8_t* snapshot() const noexcept { return streamed_ ? nullptr : buffer_; }
+
  private:
   ObjectAccess& access_;
   uint8_t* buffer_;
