@@ -63,22 +63,33 @@ ObjectDictionary::ObjectDictionary(const Definition& definition, void* values) n
 
 namespace {
 
-// The object hash table (Definition::objectSlots): about one and a half probes for a table
+// The objects after a collision in the hash table: the next slots, in turn.
+[[gnu::noinline]] const Object* probeObject(const Definition& definition, uint16_t index,
+                                            uint32_t slot) noexcept {
+  const uint32_t mask = (uint32_t{1} << definition.objectSlotBits) - 1U;
+  for (slot = (slot + 1U) & mask;; slot = (slot + 1U) & mask) {
+    const uint16_t entry = definition.objectSlots[slot];
+    if (entry == 0U) {
+      return nullptr;
+    }
+    const Object* object = &definition.objects[entry - 1U];
+    if (object->index == index) {
+      return object;
+    }
+  }
+}
+
+// The object hash table (Definition::objectSlots): one probe for most objects of a table
 // filled to 60 %; else a binary search without a branch on the comparison.
 inline const Object* searchObject(const Definition& definition, uint16_t index) noexcept {
   if (definition.objectSlots != nullptr) {
-    const uint32_t mask = (uint32_t{1} << definition.objectSlotBits) - 1U;
-    for (uint32_t slot = objectSlotOf(index, definition.objectSlotBits);;
-         slot = (slot + 1U) & mask) {
-      const uint16_t entry = definition.objectSlots[slot];
-      if (entry == 0U) {
-        return nullptr;
-      }
-      const Object* object = &definition.objects[entry - 1U];
-      if (object->index == index) {
-        return object;
-      }
+    const uint32_t slot = objectSlotOf(index, definition.objectSlotBits);
+    const uint16_t entry = definition.objectSlots[slot];
+    if (entry == 0U) {
+      return nullptr;
     }
+    const Object* object = &definition.objects[entry - 1U];
+    return object->index == index ? object : probeObject(definition, index, slot);
   }
   const Object* low = definition.objects;
   size_t count = definition.objectCount;
@@ -104,12 +115,16 @@ AbortCode ObjectDictionary::find(uint16_t index, uint8_t subIndex, EntryRef* out
   if (object == nullptr) {
     return AbortCode::kNoObject;
   }
-  const EntryRef ref = locate(*object, subIndex);
-  if (!ref.valid()) {
-    return AbortCode::kNoSubIndex;
+  for (uint8_t i = 0; i < object->rowCount; ++i) {
+    const SubEntry& row = object->rows[i];
+    if (static_cast<uint8_t>(subIndex - row.subIndex) < row.count && subIndex >= row.subIndex) {
+      out->object = object;
+      out->row = &row;
+      out->sub = subIndex;
+      return AbortCode::kNone;
+    }
   }
-  *out = ref;
-  return AbortCode::kNone;
+  return AbortCode::kNoSubIndex;
 }
 
 EntryRef ObjectDictionary::find(uint16_t index, uint8_t subIndex) const noexcept {

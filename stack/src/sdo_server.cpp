@@ -134,10 +134,8 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
     }
     CanFrame response;
     channel_.address(response);
+    copyBytes(response.data, request, 4);  // the multiplexer as asked
     response.data[0] = kScsInitiateDownloadResponse;
-    response.data[1] = request[1];
-    response.data[2] = request[2];
-    response.data[3] = subIndex_;
     channel_.send(response);
     return;
   }
@@ -181,13 +179,11 @@ COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcep
   const size_t size = ref_.size();
   CanFrame response;
   channel_.address(response);
+  copyBytes(response.data, request, 4);  // the multiplexer (index, sub-index) as asked
   response.data[0] =
       profile_.expeditedUpload == ExpeditedUploadFormat::kSizeIndicated
           ? static_cast<uint8_t>(kScsInitiateUploadResponse | ((4U - size) << 2U) | 0x03U)
           : static_cast<uint8_t>(kScsInitiateUploadResponse | 0x02U);
-  response.data[1] = request[1];
-  response.data[2] = request[2];
-  response.data[3] = subIndex_;
   access_.dictionary().readNumber(ref_, response.data + 4);
   channel_.send(response);
 }

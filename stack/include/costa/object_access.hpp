@@ -61,7 +61,11 @@ class ObjectAccess {
     if (!out->has(od::kReadable)) {
       return AbortCode::kReadOfWriteOnly;
     }
-    ObjectHook* hook = hookOf(index);
+    ObjectHook* hook = hooks_.find(index);
+    if (hook == nullptr) {
+      hook =
+          services_.findReader(index);  // of the stack's own services, only those that refine reads
+    }
     return hook == nullptr ? AbortCode::kNone : hook->prepareRead(dictionary_, *out, request);
   }
 

@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "costa/features.hpp"
 #include "costa/object_hook.hpp"
 
 namespace costa {
@@ -28,6 +29,19 @@ class ServiceObjects {
                 hooks.heartbeat},
                hooks.pdos} {}
 
+  /// The hook of the service that owns `index` when that service refines reads (prepareRead:
+  /// the store commands' 0x1010/0x1011, which read 1 or 0 by whether storage is there, and the
+  /// stand-ins of compiled-out services, whose objects do not exist), else null: the other
+  /// services read as the dictionary does.
+  ObjectHook* findReader(uint16_t index) const noexcept {
+    const uint32_t offset = index - 0x1000U;
+    if (offset >= sizeof(kOwners)) {
+      return nullptr;
+    }
+    const uint8_t owner = kOwners[offset];
+    return (kReaders & (1U << owner)) != 0U ? hooks_.of[owner] : nullptr;
+  }
+
   /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x101F.
   ObjectHook* find(uint16_t index) const noexcept {
     if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
@@ -38,6 +52,10 @@ class ServiceObjects {
   }
 
  private:
+  /// Table::of positions of the services with a prepareRead() of their own.
+  static constexpr uint32_t kReaders = (1U << 4U) |  // store commands (or their stand-in)
+                                       (features::kNodeGuarding ? 0U : 1U << 3U) |
+                                       (features::kHeartbeatConsumer ? 0U : 1U << 5U);
   /// Which service owns 0x1000 + n: 0 none, else a position in Table::of.
   static constexpr uint8_t kOwners[0x20] = {
       0, 0, 0, 1, 0, 2, 2, 2, 0, 0, 0, 0, 3, 3, 0, 0,  // 0x1003 EMCY; 0x1005-7 SYNC; 0x100C/D
