@@ -73,32 +73,42 @@ void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
   if (router_.stale()) {
     buildRoutes();
   }
-  // The usual frame has one route; frames of several routes and error control frames (which
-  // have none) go the longer way.
   const RouteEntry* entry = router_.find(frame.id);
-  const bool used = entry != nullptr && !router_.shared() ? route(*entry, frame)
-                                                          : routeOther(entry, frame);
+  if (entry == nullptr) {
+    if (!errorControlFrame(frame)) {
+      ++framesIgnored_;
+    }
+    return;
+  }
+  // The route expanded here where speed counts; in a build for size, the one out-of-line copy.
+  bool used = kExpandFastPaths ? route(*entry, frame) : routeOne(*entry, frame);
+  if (router_.shared()) {
+    used = routeFurther(entry, frame) || used;
+  }
   if (!used) {
     ++framesIgnored_;
   }
 }
 
-bool Node::routeOther(const RouteEntry* entry, const CanFrame& frame) noexcept {
-  if (entry == nullptr) {
-    // 0x701..0x77F: heartbeats of other nodes and node guarding requests (CiA 301 restricts
-    // these CAN-IDs, so no other route uses them).
-    const uint8_t id = nmt_.nodeId();
-    return frame.id - (cob::kErrorControlBase + 1U) < 127U && id != cob::kLssUnconfigured &&
-           nmt_.state() != NmtState::kInitialising && errorControl_.onFrame(frame, id);
-  }
+bool Node::routeFurther(const RouteEntry* entry, const CanFrame& frame) noexcept {
   bool used = false;
-  for (; entry != nullptr; entry = router_.nextOfSameId(entry)) {
-    used = route(*entry, frame) || used;
-    if (router_.stale()) {
-      break;  // a reset rebuilt the table under our feet
-    }
+  // (a reset may rebuild the table under our feet: then the frame has been handled)
+  while (!router_.stale() && (entry = router_.nextOfSameId(entry)) != nullptr) {
+    used = routeOne(*entry, frame) || used;
   }
   return used;
+}
+
+bool Node::routeOne(const RouteEntry& entry, const CanFrame& frame) noexcept {
+  return route(entry, frame);
+}
+
+bool Node::errorControlFrame(const CanFrame& frame) noexcept {
+  // 0x701..0x77F: heartbeats of other nodes and node guarding requests (CiA 301 restricts
+  // these CAN-IDs, so no route uses them).
+  const uint8_t id = nmt_.nodeId();
+  return frame.id - (cob::kErrorControlBase + 1U) < 127U && id != cob::kLssUnconfigured &&
+         nmt_.state() != NmtState::kInitialising && errorControl_.onFrame(frame, id);
 }
 
 void Node::handleSync(const SyncEvent& sync) noexcept {

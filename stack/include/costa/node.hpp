@@ -189,8 +189,12 @@ class Node {
   Microseconds runDue() noexcept;
   void buildRoutes() noexcept;
   COSTA_HOT_INLINE bool route(const RouteEntry& entry, const CanFrame& frame) noexcept;
-  /// A frame without a route (error control), or with several.
-  bool routeOther(const RouteEntry* entry, const CanFrame& frame) noexcept;
+  /// The routes after `entry` of a CAN-ID with several (a SYNC that is also an RPDO, ...).
+  bool routeFurther(const RouteEntry* entry, const CanFrame& frame) noexcept;
+  /// route() out of line, for those further routes.
+  [[gnu::noinline]] bool routeOne(const RouteEntry& entry, const CanFrame& frame) noexcept;
+  /// A frame without a route: error control (other nodes' heartbeats, guarding requests).
+  bool errorControlFrame(const CanFrame& frame) noexcept;
   void handleSync(const SyncEvent& sync) noexcept;
   bool preOrOperational() const noexcept {
     return nmt_.state() == NmtState::kPreOperational || nmt_.state() == NmtState::kOperational;
