@@ -3,6 +3,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <map>
+#include <vector>
+
 #include "costa/od/little_endian.hpp"
 
 namespace costa::fuzz {
@@ -78,15 +81,14 @@ bool withinLimits(const od::Definition& definition, const od::EntryRef& ref, uin
   return false;
 }
 
-/// True when the entry's value fits its definition; else false with the reason in `problem`.
-bool entryFits(const od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+/// True when the value of a RAM entry, at `address`, fits its definition; else false with the
+/// reason in `problem`. (The value is read in place: the checks call none of the stack's code,
+/// which the fuzzer instruments.)
+bool entryFits(const od::Definition& definition, const od::EntryRef& ref, const uint8_t* address,
                std::string* problem) {
   const od::DataType type = ref.type();
-  if (ref.inRom() || type == od::DataType::kDomain) {
-    return true;
-  }
   if (type == od::DataType::kVisibleString) {
-    if (dictionary.address(ref)[ref.size()] != 0U) {
+    if (address[ref.size()] != 0U) {
       *problem = "string without its terminating zero";
       return false;
     }
@@ -96,7 +98,7 @@ bool entryFits(const od::ObjectDictionary& dictionary, const od::EntryRef& ref,
     return true;
   }
   uint64_t raw = 0;
-  if (!nativeValue(dictionary.address(ref), ref.size(), &raw)) {
+  if (!nativeValue(address, ref.size(), &raw)) {
     *problem = "numeric value of " + std::to_string(ref.size()) + " bytes";
     return false;
   }
@@ -104,15 +106,47 @@ bool entryFits(const od::ObjectDictionary& dictionary, const od::EntryRef& ref,
     *problem = "BOOLEAN " + std::to_string(raw);
     return false;
   }
-  return ref.row->limits == 0U || withinLimits(dictionary.definition(), ref, raw, problem);
+  return ref.row->limits == 0U || withinLimits(definition, ref, raw, problem);
+}
+
+/// A RAM entry whose value can break a rule, and where its value is in the RAM block.
+struct Constrained {
+  od::EntryRef ref;
+  uint32_t offset;
+};
+
+/// The entries whose value can break a rule (strings, BOOLEANs, entries with limits, numbers of
+/// an odd size); the others accept every bit pattern. Worked out once per definition.
+const std::vector<Constrained>& constrainedEntries(const od::Definition& definition) {
+  static std::map<const od::Definition*, std::vector<Constrained>> known;
+  const auto found = known.find(&definition);
+  if (found != known.end()) {
+    return found->second;
+  }
+  std::vector<Constrained>& entries = known[&definition];
+  for (const od::EntryRef& ref : od::Entries(definition)) {
+    const od::DataType type = ref.type();
+    if (ref.inRom() || type == od::DataType::kDomain) {
+      continue;
+    }
+    const bool oddSize =
+        ref.size() != 1U && ref.size() != 2U && ref.size() != 4U && ref.size() != 8U;
+    if (type == od::DataType::kVisibleString || type == od::DataType::kBoolean ||
+        (od::isNumeric(type) && (ref.row->limits != 0U || oddSize))) {
+      entries.push_back(Constrained{ref, ref.offset()});
+    }
+  }
+  return entries;
 }
 
 }  // namespace
 
 std::string checkDictionaryValues(const od::ObjectDictionary& dictionary) {
-  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
+  const od::Definition& definition = dictionary.definition();
+  const auto* values = static_cast<const uint8_t*>(dictionary.values());
+  for (const auto& [ref, offset] : constrainedEntries(definition)) {
     std::string problem;
-    if (!entryFits(dictionary, ref, &problem)) {
+    if (!entryFits(definition, ref, values + offset, &problem)) {
       char where[32];
       snprintf(where, sizeof(where), "0x%04X:%02X: ", ref.index(),
                static_cast<unsigned>(ref.subIndex()));

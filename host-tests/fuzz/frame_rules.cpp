@@ -1,6 +1,11 @@
 #include "frame_rules.hpp"
 
 #include <stdio.h>
+#include <string.h>
+
+#include <map>
+#include <utility>
+#include <vector>
 
 #include "costa/cob_ids.hpp"
 
@@ -32,26 +37,80 @@ struct PdoCobId {
   uint32_t id;
 };
 
+/// A 32-bit value read in place (the checks call none of the stack's code, which the fuzzer
+/// instruments): from the RAM block, or the ROM block for a constant (which holds a `$NODEID`
+/// value without the node-id).
+uint32_t u32At(const od::ObjectDictionary& dictionary, const od::EntryRef& ref) {
+  const void* block = ref.inRom() ? dictionary.definition().constants : dictionary.values();
+  uint32_t value = 0;
+  memcpy(&value, static_cast<const uint8_t*>(block) + ref.offset(), sizeof(value));
+  if (ref.inRom() && ref.has(od::kNodeIdRelative)) {
+    value += dictionary.nodeId();
+  }
+  return value;
+}
+
+/// Sub-index 0 of `index` when the definition has it as a 32-bit entry, else an invalid ref.
+od::EntryRef u32Entry(const od::Definition& definition, uint16_t index) {
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    if (definition.objects[i].index == index) {
+      const od::EntryRef ref = od::locate(definition.objects[i], 0);
+      return ref.valid() && ref.size() == 4U ? ref : od::EntryRef{};
+    }
+  }
+  return od::EntryRef{};
+}
+
+/// The COB-ID entries (sub-index 1) of a definition's PDO communication parameters, with
+/// whether each is an RPDO's. Worked out once per definition.
+const std::vector<std::pair<od::EntryRef, bool>>& pdoCobIdEntries(
+    const od::Definition& definition) {
+  static std::map<const od::Definition*, std::vector<std::pair<od::EntryRef, bool>>> known;
+  const auto found = known.find(&definition);
+  if (found != known.end()) {
+    return found->second;
+  }
+  std::vector<std::pair<od::EntryRef, bool>>& entries = known[&definition];
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    const od::Object& object = definition.objects[i];
+    const bool receive = object.index >= kFirstRpdo && object.index <= kLastRpdo;
+    if (!receive && (object.index < kFirstTpdo || object.index > kLastTpdo)) {
+      continue;
+    }
+    const od::EntryRef ref = od::locate(object, 1);
+    if (ref.valid() && ref.size() == 4U) {
+      entries.emplace_back(ref, receive);
+    }
+  }
+  return entries;
+}
+
+/// The SYNC and EMCY COB-ID entries of a definition (invalid refs when it has none).
+struct CobIdEntries {
+  od::EntryRef sync;
+  od::EntryRef emcy;
+};
+
+const CobIdEntries& cobIdEntries(const od::Definition& definition) {
+  static std::map<const od::Definition*, CobIdEntries> known;
+  const auto found = known.find(&definition);
+  if (found != known.end()) {
+    return found->second;
+  }
+  return known[&definition] =
+             CobIdEntries{u32Entry(definition, kSyncCobId), u32Entry(definition, kEmcyCobId)};
+}
+
 /// Calls `visit(PdoCobId, receive)` for every PDO communication parameter of the node.
 template <typename Visit>
 void forEachPdo(const Node& node, Visit visit) {
   const od::ObjectDictionary& dictionary = node.dictionary();
-  const od::Definition& definition = dictionary.definition();
   const bool cia301 = node.profile().pdo.cobIdPolarity == PdoCobIdPolarity::kCia301;
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const uint16_t index = definition.objects[i].index;
-    const bool receive = index >= kFirstRpdo && index <= kLastRpdo;
-    if (!receive && (index < kFirstTpdo || index > kLastTpdo)) {
-      continue;
-    }
-    const od::EntryRef ref = dictionary.find(index, 1);
-    if (!ref.valid()) {
-      continue;
-    }
-    const auto value = static_cast<uint32_t>(dictionary.readUnsigned(ref));
+  for (const auto& [ref, receive] : pdoCobIdEntries(dictionary.definition())) {
+    const uint32_t value = u32At(dictionary, ref);
     const bool bit31 = (value & kInvalidBit) != 0U;
     const bool valid = (cia301 ? !bit31 : bit31) && plainStandardId(value);
-    visit(PdoCobId{index, value, valid, value & kIdBits}, receive);
+    visit(PdoCobId{ref.index(), value, valid, value & kIdBits}, receive);
   }
 }
 
@@ -92,15 +151,16 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
   }
   ids.add(cob::kSdoTxBase + nodeId);
   const od::ObjectDictionary& dictionary = node.dictionary();
-  if (dictionary.findObject(kEmcyCobId) == nullptr) {
+  const CobIdEntries& cobIds = cobIdEntries(dictionary.definition());
+  if (!cobIds.emcy.valid()) {
     ids.add(cob::kEmcyBase + nodeId);
   } else {
-    const auto emcy = static_cast<uint32_t>(dictionary.readUnsigned(kEmcyCobId, 0, 0));
+    const uint32_t emcy = u32At(dictionary, cobIds.emcy);
     if ((emcy & kInvalidBit) == 0U && plainStandardId(emcy) && !restrictedCanId(emcy & kIdBits)) {
       ids.add(emcy & kIdBits);
     }
   }
-  const auto sync = static_cast<uint32_t>(dictionary.readUnsigned(kSyncCobId, 0, 0));
+  const uint32_t sync = cobIds.sync.valid() ? u32At(dictionary, cobIds.sync) : 0U;
   if ((sync & kSyncProducerBit) != 0U && plainStandardId(sync) &&
       !restrictedCanId(sync & kIdBits)) {
     ids.add(sync & kIdBits);
@@ -121,14 +181,15 @@ std::string checkConfiguredCanIds(const Node& node) {
     return "";  // silent until LSS gives it a node-id; $NODEID defaults mean nothing yet
   }
   const od::ObjectDictionary& dictionary = node.dictionary();
-  if (dictionary.findObject(kSyncCobId) != nullptr) {
-    const auto sync = static_cast<uint32_t>(dictionary.readUnsigned(kSyncCobId, 0, 0));
+  const CobIdEntries& cobIds = cobIdEntries(dictionary.definition());
+  if (cobIds.sync.valid()) {
+    const uint32_t sync = u32At(dictionary, cobIds.sync);
     if (restrictedCanId(sync & kIdBits)) {
       return "SYNC COB-ID " + hex(sync) + " has a restricted CAN-ID";
     }
   }
-  if (dictionary.findObject(kEmcyCobId) != nullptr) {
-    const auto emcy = static_cast<uint32_t>(dictionary.readUnsigned(kEmcyCobId, 0, 0));
+  if (cobIds.emcy.valid()) {
+    const uint32_t emcy = u32At(dictionary, cobIds.emcy);
     if ((emcy & kInvalidBit) == 0U && restrictedCanId(emcy & kIdBits)) {
       return "valid EMCY COB-ID " + hex(emcy) + " has a restricted CAN-ID";
     }
@@ -165,35 +226,45 @@ std::string describeFrame(const CanFrame& frame) {
   return text;
 }
 
-std::string checkTransmittedFrame(const CanFrame& frame, const CanIdSet& allowed) {
-  const std::string what = "transmitted frame " + describeFrame(frame) + ": ";
+namespace {
+
+/// Why `frame` may not be transmitted, or null.
+const char* transmittedFrameFault(const CanFrame& frame, const CanIdSet& allowed) {
   if (frame.dlc > 8U) {
-    return what + "DLC above 8";
+    return "DLC above 8";
   }
   if (frame.extended) {
-    return what + "29-bit identifier";
+    return "29-bit identifier";
   }
   if (frame.rtr) {
-    return what + "remote frame";
+    return "remote frame";
   }
   for (size_t i = frame.dlc; i < sizeof(frame.data); ++i) {
     if (frame.data[i] != 0U) {
-      return what + "data byte beyond the DLC is not zero";
+      return "data byte beyond the DLC is not zero";
     }
   }
   if (!allowed.contains(frame.id)) {
-    return what + "CAN-ID not the node's to use";
+    return "CAN-ID not the node's to use";
   }
   const bool sdo = frame.id > cob::kSdoTxBase && frame.id <= cob::kSdoTxBase + 127U;
   const bool errorControl =
       frame.id > cob::kErrorControlBase && frame.id <= cob::kErrorControlBase + 127U;
   if ((sdo || frame.id == cob::kLssToMaster) && frame.dlc != 8U) {
-    return what + "SDO and LSS frames have 8 bytes";
+    return "SDO and LSS frames have 8 bytes";
   }
   if (errorControl && frame.dlc != 1U) {
-    return what + "boot-up, heartbeat and guarding frames have 1 byte";
+    return "boot-up, heartbeat and guarding frames have 1 byte";
   }
-  return "";
+  return nullptr;
+}
+
+}  // namespace
+
+std::string checkTransmittedFrame(const CanFrame& frame, const CanIdSet& allowed) {
+  const char* fault = transmittedFrameFault(frame, allowed);  // the text only for a fault
+  return fault == nullptr ? std::string()
+                          : "transmitted frame " + describeFrame(frame) + ": " + fault;
 }
 
 }  // namespace costa::fuzz

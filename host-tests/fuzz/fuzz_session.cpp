@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <map>
 #include <memory>
 
 #include "costa/cob_ids.hpp"
@@ -69,14 +70,35 @@ std::string describe(const Event& event) {
   return "nothing";
 }
 
+/// A device of the list with its controller, made once per device and program and renewed
+/// for every input (the same memory for every input: no allocation per input).
+struct Bench {
+  WatchingCan can;
+  std::unique_ptr<FuzzedDevice> device;
+};
+
+Bench* benchFor(const std::string& device) {
+  static std::map<std::string, std::unique_ptr<Bench>> benches;
+  std::unique_ptr<Bench>& bench = benches[device];
+  if (!bench) {
+    bench = std::make_unique<Bench>();
+    bench->device = createFuzzedDevice(device, bench->can, PowerOnOptions{});
+    if (!bench->device) {
+      benches.erase(device);
+      return nullptr;
+    }
+  }
+  return bench.get();
+}
+
 class Session {
  public:
-  Session(const std::string& device, const PowerOnOptions& options, std::string* trace)
-      : device_(createFuzzedDevice(device, can_, options)), trace_(trace) {
-    can_.watch(device_.get());
+  Session(Bench* bench, const PowerOnOptions& options, std::string* trace)
+      : can_(bench->can), device_(bench->device.get()), trace_(trace) {
+    device_->renew(options);
+    can_.watch(device_);
   }
 
-  bool known() const { return device_ != nullptr; }
   /// The input has used up its process() calls: it ends here.
   bool exhausted() const { return processCalls_ >= kProcessCallBudget; }
 
@@ -146,7 +168,7 @@ class Session {
       }
       case EventKind::kWait: return advanceTo(now_ + event.duration);
       case EventKind::kWaitForDeadline:
-        if (next_ != kNever && next_ - event.duration > now_) {
+        if (next_ != kNever && before(now_, next_ - event.duration)) {
           return advanceTo(next_ - event.duration);
         }
         return "";
@@ -220,10 +242,10 @@ class Session {
           return problem;
         }
       }
-      if (next_ > now_) {
+      if (next_ == kNever || before(now_, next_)) {
         return "";
       }
-      if (next_ < now_) {
+      if (next_ != now_) {
         return "process() at " + std::to_string(now_) + " us asked to run again at " +
                std::to_string(next_) + " us, in the past";
       }
@@ -236,11 +258,13 @@ class Session {
 
   /// Advances the clock to `end`, running process() at every deadline on the way.
   std::string advanceTo(Microseconds end) {
-    while (next_ <= end) {
+    while (next_ != kNever && !before(end, next_)) {
       if (exhausted()) {
         return "";  // the input ends after this event
       }
-      now_ = next_ > now_ ? next_ : now_;
+      if (before(now_, next_)) {
+        now_ = next_;
+      }
       const std::string problem = runProcess();
       if (!problem.empty()) {
         return problem;
@@ -275,10 +299,11 @@ class Session {
     return "";
   }
 
-  WatchingCan can_;
-  std::unique_ptr<FuzzedDevice> device_;
+  WatchingCan& can_;
+  FuzzedDevice* device_;
   std::string* trace_;
-  Microseconds now_ = 0;
+  /// One second before the 32-bit clock wraps, as the transcript replays: inputs cross the wrap.
+  Microseconds now_ = 0xFFFFFFFFU - 999999U;
   Microseconds next_ = kNever;
   CanIdSet allowedBefore_;  ///< at the end of the last event, and while frames were queued
   size_t storageChanges_ = SIZE_MAX;  // the first check always runs
@@ -291,10 +316,11 @@ std::string runFuzzInput(const std::string& device, const uint8_t* data, size_t 
                          std::string* trace) {
   EventReader reader(data, size);
   const PowerOnOptions options = decodeHeader(reader.header());
-  auto session = std::make_unique<Session>(device, options, trace);
-  if (!session->known()) {
+  Bench* bench = benchFor(device);
+  if (bench == nullptr) {
     return "unknown device '" + device + "'";
   }
+  auto session = std::make_unique<Session>(bench, options, trace);
   if (trace != nullptr) {
     *trace += "power-on, node-id " + std::to_string(options.nodeId) +
               (options.explicitId ? " (explicit)\n" : " (the device's own)\n");

@@ -27,6 +27,13 @@ class FuzzedComposition final : public FuzzedDevice {
     composition_.emplace(can_, config);
     composition_->start(now);
   }
+  void renew(const PowerOnOptions& options) override {
+    composition_.reset();
+    storage_.restorePower();
+    storage_.erase(0, storage_.size());
+    storage_.resetCounters();
+    options_ = options;
+  }
   void onFrame(const CanFrame& frame, Microseconds now) override {
     composition_->onFrame(frame, now);
   }

@@ -25,6 +25,9 @@ class FuzzedDevice {
   /// Builds the composition (again, after a power cycle) and starts it at `now`. What the
   /// simulation commands set (a shaft's angle, a fault) starts over with it.
   virtual void powerOn(Microseconds now) = 0;
+  /// A new device for the next input, in the same memory: no composition, erased storage with
+  /// power and fresh counters, `options` for the power-ons to come.
+  virtual void renew(const PowerOnOptions& options) = 0;
   virtual void onFrame(const CanFrame& frame, Microseconds now) = 0;
   /// The composition's process(): node and device behaviour; returns the next deadline.
   virtual Microseconds process(Microseconds now) = 0;

@@ -13,8 +13,14 @@ namespace costa::fuzz {
 /// send nothing: during an LSS bit timing switch, or while bus-off.
 class WatchingCan final : public port::RecordingCan {
  public:
-  /// The device whose node is asked at every frame (null: none yet).
-  void watch(FuzzedDevice* device) { device_ = device; }
+  /// The device whose node is asked at every frame (null: none yet). Starts over: no frame
+  /// recorded, none noted, frames accepted.
+  void watch(FuzzedDevice* device) {
+    device_ = device;
+    problem_.clear();
+    clear();
+    setAccepting(true);
+  }
   bool tryTransmit(const CanFrame& frame) noexcept override {
     if (device_ != nullptr && problem_.empty()) {
       const Node& node = device_->node();

@@ -139,8 +139,8 @@ BlockTransferResult SdoBlockClient::download(uint16_t index, uint8_t subIndex,
   if (options.corruptCrc) {
     crc = static_cast<uint16_t>(crc ^ 0x0101U);
   }
-  send({static_cast<uint8_t>(0xC1U | (unused << 2U)), static_cast<uint8_t>(crc),
-        static_cast<uint8_t>(crc >> 8U)});
+  send({static_cast<uint8_t>(0xC1U | (static_cast<unsigned>(unused) << 2U)),
+        static_cast<uint8_t>(crc), static_cast<uint8_t>(crc >> 8U)});
   if (!next(r, &result)) {
     return result;
   }
@@ -241,7 +241,7 @@ void SdoBlockClient::normalUpload(const uint8_t (&first)[8], BlockTransferResult
   uint8_t toggle = 0;
   uint8_t r[8];
   for (;;) {
-    send({static_cast<uint8_t>(0x60U | (toggle << 4U))});
+    send({static_cast<uint8_t>(0x60U | (static_cast<unsigned>(toggle) << 4U))});
     if (!next(r, result)) {
       return;
     }

@@ -143,13 +143,14 @@ def default_records(device: Device, layout: Layout) -> tuple:
         data = default_bytes(entry)
         if not any(data):
             continue
-        numeric = entry.data_type.kind in _MERGEABLE_KINDS and len(data) <= 4
-        if numeric:
+        numeric = entry.data_type.kind in _MERGEABLE_KINDS
+        if numeric and len(data) <= 4:
             value = int.from_bytes(data, "little")
         else:
             value = len(blob)
             blob += data
-        records.append((layout.offsets[(entry.index, entry.sub)], len(data), value,
+        size = f"{len(data)} | costa::od::DefaultValue::kNumeric" if numeric else str(len(data))
+        records.append((layout.offsets[(entry.index, entry.sub)], size, value,
                         f"0x{entry.index:04X}:{entry.sub}"))
     return records, bytes(blob)
 
@@ -277,6 +278,8 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
                      f"{OBJECT_CODES[obj.code]}, {object_rows[obj.index]}, "
                      f"kRows{obj.index:04X}}},")
     lines += ["};", ""]
+    lines.append("static_assert(costa::od::ramInIndexOrder(kObjects), \"RAM values in the order "
+                 "of their indices\");")
     for check in layout.size_checks:
         lines.append(f"static_assert({check.expression} == {check.size}, "
                      f"\"size of {check.label}\");")

@@ -310,16 +310,17 @@ const DefaultValue* firstDefaultFrom(const Definition& definition, size_t offset
   return low;
 }
 
-// Writes one default of a value of type `type` at `target`.
-void writeDefault(const Definition& definition, const DefaultValue& value, DataType type,
+// Writes one default at `target`.
+void writeDefault(const Definition& definition, const DefaultValue& value,
                   uint8_t* target) noexcept {
-  if (isNumeric(type)) {
-    const uint64_t raw =
-        value.size <= 4U ? value.value
-                         : loadLittleEndianBytes(definition.defaultBytes + value.value, value.size);
-    storeNative(target, raw, value.size);
+  const size_t bytes = value.bytes();
+  if (value.numeric()) {
+    const uint64_t raw = bytes <= 4U
+                             ? value.value
+                             : loadLittleEndianBytes(definition.defaultBytes + value.value, bytes);
+    storeNative(target, raw, bytes);
   } else {
-    copyBytes(target, definition.defaultBytes + value.value, value.size);
+    copyBytes(target, definition.defaultBytes + value.value, bytes);
   }
 }
 
@@ -330,7 +331,7 @@ void copyDefault(const Definition& definition, const EntryRef& ref, uint8_t* des
   fillBytes(destination, 0, bytes);
   const DefaultValue* value = firstDefaultFrom(definition, ref.offset());
   if (value < definition.defaults + definition.defaultCount && value->offset == ref.offset()) {
-    writeDefault(definition, *value, ref.type(), destination);
+    writeDefault(definition, *value, destination);
   }
 }
 
@@ -345,12 +346,17 @@ void ObjectDictionary::restoreRow(const SubEntry& row) noexcept {
   const DefaultValue* last = definition.defaults + definition.defaultCount;
   for (const DefaultValue* value = firstDefaultFrom(definition, row.offset);
        value < last && value->offset < end; ++value) {
-    writeDefault(definition, *value, row.type, values_ + value->offset);
+    writeDefault(definition, *value, values_ + value->offset);
   }
   if ((row.attributes & kNodeIdRelative) != 0U) {
-    for (size_t offset = row.offset; offset < end; offset += bytes) {
-      storeNative(values_ + offset, loadNative(values_ + offset, row.size) + nodeId_, row.size);
-    }
+    addNodeId(row);
+  }
+}
+
+void ObjectDictionary::addNodeId(const SubEntry& row) noexcept {
+  const size_t end = row.offset + row.count * storageBytes(row);
+  for (size_t offset = row.offset; offset < end; offset += storageBytes(row)) {
+    storeNative(values_ + offset, loadNative(values_ + offset, row.size) + nodeId_, row.size);
   }
 }
 
@@ -364,10 +370,57 @@ void ObjectDictionary::restoreRows(const Object& object, Wanted wanted) noexcept
 }
 
 void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
-  for (size_t i = 0; i < definition_->objectCount; ++i) {
-    const Object& object = definition_->objects[i];
-    if (object.index >= first && object.index <= last) {
-      restoreRows(object, [](const SubEntry&) { return true; });
+  // The RAM values of [first, last] are one range of the block (ramInIndexOrder): zero it,
+  // then write the non-zero defaults that fall in it, then add the node-id where it belongs.
+  const Definition& definition = *definition_;
+  size_t begin = SIZE_MAX;
+  size_t end = 0;
+  const bool whole = first == 0U && last == UINT16_MAX;
+  if (whole) {
+    begin = 0;
+    end = definition.valuesSize;
+  }
+  for (size_t i = 0; i < definition.objectCount && !whole; ++i) {
+    const Object& object = definition.objects[i];
+    if (object.index > last) {
+      break;  // objects are in the order of their indices
+    }
+    if (object.index < first) {
+      continue;
+    }
+    for (uint8_t r = 0; r < object.rowCount; ++r) {
+      const SubEntry& row = object.rows[r];
+      if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
+        continue;
+      }
+      if (begin == SIZE_MAX) {
+        begin = row.offset;
+      }
+      end = row.offset + row.count * storageBytes(row);
+    }
+  }
+  if (begin == SIZE_MAX) {
+    return;
+  }
+  fillBytes(values_ + begin, 0, end - begin);
+  const DefaultValue* stop = definition.defaults + definition.defaultCount;
+  for (const DefaultValue* value = firstDefaultFrom(definition, begin);
+       value < stop && value->offset < end; ++value) {
+    writeDefault(definition, *value, values_ + value->offset);
+  }
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    const Object& object = definition.objects[i];
+    if (object.index > last) {
+      break;
+    }
+    if (object.index < first) {
+      continue;
+    }
+    for (uint8_t r = 0; r < object.rowCount; ++r) {
+      const SubEntry& row = object.rows[r];
+      if ((row.attributes & (kNodeIdRelative | kInRom)) == kNodeIdRelative) {
+        addNodeId(row);
+      }
     }
   }
 }

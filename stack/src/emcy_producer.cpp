@@ -162,8 +162,9 @@ void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) n
   if (reached(now, nextAllowed_)) {
     nextAllowed_ = kNever;  // the inhibit time is over
   }
-  if (state != NmtState::kPreOperational && state != NmtState::kOperational) {
-    return;
+  if (pendingCount_ == 0U || nextAllowed_ != kNever ||
+      (state != NmtState::kPreOperational && state != NmtState::kOperational)) {
+    return;  // nothing to send now: no lookup of the COB-ID and the inhibit time
   }
   const uint32_t cob = cobId();
   if ((cob & 0x80000000U) != 0U) {

@@ -46,7 +46,9 @@ bool Node::attachHook(uint16_t first, uint16_t last, ObjectHook& hook) noexcept 
     ++hooksRefused_;
     return false;
   }
-  pdos_.refreshMappings();  // entries behind the hook now go through it
+  if (nmt_.state() != NmtState::kInitialising) {
+    pdos_.refreshMappings();  // entries behind the hook now go through it
+  }  // (before start() and during a reset, the reset's configuration of the PDOs resolves them)
   return true;
 }
 

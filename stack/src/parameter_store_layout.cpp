@@ -91,20 +91,44 @@ size_t ParameterStore::computeLayout(Region* regions, size_t* count) const noexc
     offset += 2U * slotSize;
     return true;
   };
-  // Which groups occur, in one pass over the dictionary.
-  uint32_t present[8] = {};
+  // The groups that occur and the bytes each stores, in one pass over the rows, kept in order
+  // of group id (the regions' order).
+  struct GroupBytes {
+    uint8_t group;
+    uint64_t bytes;
+  };
+  GroupBytes groups[kMaxRegions] = {};
+  size_t groupCount = 0;
   const od::Definition& definition = dictionary_.definition();
   for (size_t i = 0; i < definition.objectCount; ++i) {
     const od::Object& object = definition.objects[i];
     for (size_t r = 0; r < object.rowCount; ++r) {
-      const uint8_t group = object.rows[r].group;
-      present[group / 32U] |= uint32_t{1} << (group % 32U);
+      const od::SubEntry& row = object.rows[r];
+      if (row.group == od::kGroupNone) {
+        continue;
+      }
+      size_t at = 0;
+      while (at < groupCount && groups[at].group < row.group) {
+        ++at;
+      }
+      if (at == groupCount || groups[at].group != row.group) {
+        if (groupCount == kMaxRegions) {
+          return SIZE_MAX;  // more groups than regions
+        }
+        for (size_t k = groupCount; k > at; --k) {
+          groups[k] = groups[k - 1U];
+        }
+        groups[at] = GroupBytes{row.group, 0};
+        ++groupCount;
+      }
+      if ((row.attributes & od::kInRom) == 0U && row.type != od::DataType::kDomain) {
+        groups[at].bytes += static_cast<uint64_t>(row.size) * row.count;
+      }
     }
   }
-  for (unsigned group = 1; group <= UINT8_MAX; ++group) {
-    if ((present[group / 32U] & (uint32_t{1} << (group % 32U))) != 0U &&
-        !place(static_cast<uint16_t>(group), definition.layoutId,
-               groupPayloadLength(static_cast<uint8_t>(group)))) {
+  for (size_t i = 0; i < groupCount; ++i) {
+    if (exceeds32Bits(groups[i].bytes) ||
+        !place(groups[i].group, definition.layoutId, static_cast<size_t>(groups[i].bytes))) {
       return SIZE_MAX;
     }
   }

@@ -86,7 +86,10 @@ AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, si
       continue;
     }
     const od::EntryRef ref = dictionary.find(index, subIndex);
-    bool copied = !ref.inRom() && (kLittleEndianHost || entry.length == 1U);
+    // A TPDO copies constants too, unless the node-id is added to them when read.
+    const bool constant =
+        ref.inRom() && direction == PdoDirection::kTransmit && !ref.has(od::kNodeIdRelative);
+    bool copied = (!ref.inRom() || constant) && (kLittleEndianHost || entry.length == 1U);
     if (direction == PdoDirection::kReceive) {
       copied = copied && access.hookOf(index) == nullptr && ref.row->limits == 0U &&
                ref.type() != od::DataType::kBoolean &&
@@ -94,6 +97,9 @@ AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, si
     }
     if (copied) {
       entry.where = static_cast<uint16_t>(ref.offset());
+      if (constant) {
+        resolved.romMask_ = static_cast<uint8_t>(resolved.romMask_ | (1U << slot));
+      }
     } else {
       entry.where = index;
       entry.subIndex = subIndex;
@@ -115,7 +121,7 @@ bool PdoMap::contains(const od::EntryRef& ref) const noexcept {
       continue;
     }
     const bool same = needsAccess(i) ? slot.where == ref.index() && slot.subIndex == ref.subIndex()
-                                     : !ref.inRom() && slot.where == ref.offset();
+                                     : ref.inRom() == inRom(i) && slot.where == ref.offset();
     if (same) {
       return true;
     }
@@ -126,10 +132,11 @@ bool PdoMap::contains(const od::EntryRef& ref) const noexcept {
 void PdoMap::packThroughAccess(const ObjectAccess& access, uint8_t* out) const noexcept {
   const od::ObjectDictionary& dictionary = access.dictionary();
   const auto* values = static_cast<const uint8_t*>(dictionary.values());
+  const auto* constants = static_cast<const uint8_t*>(dictionary.definition().constants);
   for (size_t i = 0; i < count_; ++i) {
     const Slot& slot = slots_[i];
     if (!needsAccess(i)) {
-      copyValue(out, values + slot.where, slot.length);
+      copyValue(out, (inRom(i) ? constants : values) + slot.where, slot.length);
     } else {
       fillBytes(out, 0, slot.length);
       dictionary.read(locate(access, i), 0, out, slot.length);

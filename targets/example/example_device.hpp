@@ -60,7 +60,8 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   uint32_t serialNumber_;
   Microseconds secondStart_ = 0;  ///< start of the second being counted
   uint32_t uptime_ = 0;           ///< whole seconds since the last reset application
-  uint8_t scratchPad_[kScratchPadCapacity] = {};
+  /// Only the first scratchPadLength_ bytes mean something (not initialised: 12 KiB).
+  uint8_t scratchPad_[kScratchPadCapacity];  // NOLINT(cppcoreguidelines-pro-type-member-init)
   size_t scratchPadLength_ = 0;
   bool receiving_ = false;  ///< A download has started overwriting the scratch pad.
   bool attached_;           ///< last: every other member is ready when the node gets the hooks

@@ -14,16 +14,10 @@ static_assert(features::kParameterStorage,
 
 namespace {
 
-constexpr uint16_t kRawValues = 0x2000;
-constexpr uint16_t kProcessData = 0x2011;
 constexpr uint16_t kResolution = 0x2100;
 constexpr uint16_t kZeroPoint = 0x2101;
-constexpr uint16_t kClockwise = 0x2102;
-constexpr uint16_t kOutputBytes = 0x2110;
 constexpr uint16_t kErrorBehaviour = 0x4000;
-constexpr uint16_t kErrorCode = 0x4001;
 constexpr uint16_t kAutoStart = 0x5000;
-constexpr uint16_t kLittleEndian = 0x5001;
 constexpr uint16_t kLssParameters = 0x5999;
 constexpr uint16_t kGenericError = 0x1000;
 constexpr uint32_t kSaveSignature = 0x65766173;
@@ -39,8 +33,9 @@ int tableIndexOf(uint32_t kbits) {
 
 }  // namespace
 
-GefranDevice::GefranDevice(Node& node, HallSensors& sensors) noexcept
+GefranDevice::GefranDevice(Node& node, const GefranValues& values, HallSensors& sensors) noexcept
     : node_(node),
+      values_(values),
       sensors_(sensors),
       attached_(node.attachHook(kResolution, kZeroPoint, *this) &&
                 node.attachHook(kLssParameters, kLssParameters, *this) && node.addListener(*this)) {
@@ -52,9 +47,11 @@ uint32_t GefranDevice::value(uint16_t index, uint8_t sub) const noexcept {
 
 void GefranDevice::onResetApplication() noexcept {
   reportedFaults_ = 0;
+  inputs_ = AngleInputs{};
 }
 
 void GefranDevice::onResetCommunication() noexcept {
+  inputs_ = AngleInputs{};  // the communication area's defaults are back: compute again
   // 0x5000 = 1: automatic NMT start after the boot-up (E16, E17).
   node_.setAutomaticStart(value(kAutoStart, 0) == 1U);
 }
@@ -66,24 +63,31 @@ void GefranDevice::onStoredParametersInvalid(uint8_t group, StoreResult result) 
 }
 
 void GefranDevice::updateAngles() noexcept {
-  od::ObjectDictionary& dictionary = node_.dictionary();
+  // The angles follow from the chips' raw values and the settings: nothing to do while those
+  // stay as they were (the outputs are read-only; a reset clears inputs_).
+  const AngleInputs inputs{{sensors_.raw(1), sensors_.raw(2)},
+                           {values_.resolution[0], values_.resolution[1]},
+                           {values_.zeroPoint[0], values_.zeroPoint[1]},
+                           {values_.clockwise[0], values_.clockwise[1]},
+                           *values_.littleEndian,
+                           true};
+  if (inputs == inputs_) {
+    return;
+  }
+  inputs_ = inputs;
   uint16_t angles[2] = {};
-  for (uint8_t chip = 1; chip <= 2U; ++chip) {
-    const uint16_t raw = sensors_.raw(chip);
+  for (size_t chip = 0; chip < 2U; ++chip) {
+    const uint16_t raw = inputs.raw[chip];
     AngleSettings settings;
-    settings.resolution = static_cast<uint16_t>(value(kResolution, chip));
-    settings.zeroPoint = static_cast<uint16_t>(value(kZeroPoint, chip));
-    settings.clockwise = value(kClockwise, chip) == 1U;
-    angles[chip - 1U] = static_cast<uint16_t>(outputAngle(raw, settings));
-    dictionary.storeUnsigned(kRawValues, chip, raw);
-    dictionary.storeUnsigned(kProcessData, chip, angles[chip - 1U]);
+    settings.resolution = inputs.resolution[chip];
+    settings.zeroPoint = inputs.zeroPoint[chip];
+    settings.clockwise = inputs.clockwise[chip] == 1U;
+    angles[chip] = static_cast<uint16_t>(outputAngle(raw, settings));
+    values_.rawValues[chip] = raw;
+    values_.processData[chip] = angles[chip];
   }
-  dictionary.storeUnsigned(kProcessData, 3, angles[0] | (static_cast<uint32_t>(angles[1]) << 16U));
-  uint8_t bytes[4] = {};
-  packAngles(angles[0], angles[1], value(kLittleEndian, 0) == 1U, bytes);
-  for (uint8_t i = 0; i < 4U; ++i) {
-    dictionary.storeUnsigned(kOutputBytes, static_cast<uint8_t>(i + 1U), bytes[i]);
-  }
+  *values_.processDataBoth = angles[0] | (static_cast<uint32_t>(angles[1]) << 16U);
+  packAngles(angles[0], angles[1], inputs.littleEndian == 1U, values_.outputBytes);
 }
 
 void GefranDevice::updateErrors() noexcept {
@@ -91,7 +95,7 @@ void GefranDevice::updateErrors() noexcept {
   if ((faults & kMagneticField) != 0U) {
     faults |= kChip1Error | kChip2Error;  // 0x83 (E15)
   }
-  node_.dictionary().storeUnsigned(kErrorCode, 0, faults);
+  *values_.errorCode = faults;
   if (faults == reportedFaults_) {
     return;
   }

@@ -69,7 +69,7 @@ class GefranTarget {
   /// rate changes (0x5999:01 after a reset, LSS), or null.
   GefranTarget(CanTransmitter& can, const DeviceConfig& config) noexcept
       : node_(Variant::definition(), can, withEeprom(configured(settings(), config))),
-        device_(node_, sensors_) {
+        device_(node_, gefranValues(node_.values()), sensors_) {
     static_assert(settings().lss && settings().storeAllGroups != 0U,
                   "the GRA/GRN have LSS (E50) and a store command (E22)");
   }

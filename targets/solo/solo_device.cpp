@@ -22,11 +22,12 @@ int32_t roundToInt32(double value) {
 
 }  // namespace
 
-SoloDevice::SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId,
+SoloDevice::SoloDevice(SoloNode& node, DriveBackend& drive, uint8_t powerOnNodeId,
                        bool nodeIdGiven) noexcept
     : node_(node),
+      values_(node.values()),
       drive_(drive),
-      errors_(node),
+      errors_(node, values_.x3020_device_error_register),
       powerOnNodeId_(powerOnNodeId),
       nodeIdGiven_(nodeIdGiven),
       attached_(node.attachHook(kFirstObject, kLastObject, *this) && node.addListener(*this)) {}
@@ -35,52 +36,50 @@ uint32_t SoloDevice::readU32(uint16_t index) const noexcept {
   return static_cast<uint32_t>(node_.dictionary().readUnsigned(index, 0, 0));
 }
 
-double SoloDevice::readSfxt(uint16_t index) const noexcept {
-  return sfxtToDouble(
-      static_cast<int32_t>(node_.dictionary().readSigned(node_.dictionary().find(index, 0))));
-}
-
 void SoloDevice::storeSfxt(uint16_t index, double value) noexcept {
   node_.dictionary().storeUnsigned(index, 0, static_cast<uint32_t>(sfxtFromDouble(value)));
 }
 
+// The drive's inputs and outputs are read and written every step: through the generated value
+// block, as members, not looked up by index.
 DriveCommand SoloDevice::command() const noexcept {
+  const gen::solo::Values& v = values_;
   DriveCommand c;
-  c.outputEnabled = readU32(0x3008) == 1U && errors_.value() == 0U;
-  c.commanding = static_cast<CommandingMode>(readU32(0x3002));
-  c.control = static_cast<ControlMode>(readU32(0x3016));
-  c.feedback = static_cast<FeedbackMode>(readU32(0x3013));
-  c.motor = static_cast<MotorType>(readU32(0x3015));
-  c.speedReferenceRpm = static_cast<double>(readU32(0x3005));
-  c.clockwise = readU32(0x300C) == 1U;
-  c.accelerationRevPerS2 = readSfxt(0x302A);
-  c.decelerationRevPerS2 = readSfxt(0x302B);
-  c.speedLimitRpm = static_cast<double>(readU32(0x3011));
-  c.positionReference = static_cast<int32_t>(node_.dictionary().readUnsigned(0x301B, 0, 0));
-  c.torqueReferenceA = readSfxt(0x3004);
-  c.idReferenceA = readSfxt(0x301A);
-  c.currentLimitA = readSfxt(0x3003);
-  c.poles = readU32(0x300F);
-  c.encoderLines = readU32(0x3010);
+  c.outputEnabled = v.x3008_drive_disable_enable == 1U && errors_.value() == 0U;
+  c.commanding = static_cast<CommandingMode>(v.x3002_commanding_mode);
+  c.control = static_cast<ControlMode>(v.x3016_control_mode_type);
+  c.feedback = static_cast<FeedbackMode>(v.x3013_feedback_control_mode);
+  c.motor = static_cast<MotorType>(v.x3015_motor_type);
+  c.speedReferenceRpm = static_cast<double>(v.x3005_speed_reference);
+  c.clockwise = v.x300c_motor_s_direction_of_rotation == 1U;
+  c.accelerationRevPerS2 = sfxtToDouble(v.x302a_speed_acceleration_value);
+  c.decelerationRevPerS2 = sfxtToDouble(v.x302b_speed_deceleration_value);
+  c.speedLimitRpm = static_cast<double>(v.x3011_speed_limit);
+  c.positionReference = v.x301b_position_reference;
+  c.torqueReferenceA = sfxtToDouble(v.x3004_torque_reference_iq_im);
+  c.idReferenceA = sfxtToDouble(v.x301a_magnetizing_field_weakening_current_reference_id);
+  c.currentLimitA = sfxtToDouble(v.x3003_current_limit);
+  c.poles = v.x300f_motor_s_number_of_poles;
+  c.encoderLines = v.x3010_incremental_encoder_s_lines;
   return c;
 }
 
 void SoloDevice::publish(const DriveFeedback& feedback) noexcept {
-  od::ObjectDictionary& dictionary = node_.dictionary();
-  dictionary.storeUnsigned(0x3036, 0, static_cast<uint32_t>(roundToInt32(feedback.speedRpm)));
-  dictionary.storeUnsigned(0x3037, 0, static_cast<uint32_t>(feedback.position));
-  storeSfxt(0x3034, feedback.iqA);
-  storeSfxt(0x3035, feedback.idA);
-  storeSfxt(0x302F, feedback.phaseACurrentA);
-  storeSfxt(0x3030, feedback.phaseBCurrentA);
-  storeSfxt(0x302D, feedback.phaseAVoltageV);
-  storeSfxt(0x302E, feedback.phaseBVoltageV);
-  storeSfxt(0x3031, feedback.busVoltageV);
-  storeSfxt(0x3032, feedback.motorCurrentA);
-  storeSfxt(0x3033, feedback.motorVoltageV);
-  storeSfxt(0x3038, feedback.anglePerUnit);
-  storeSfxt(0x3039, feedback.boardTemperatureC);
-  dictionary.storeUnsigned(0x3049, 0, feedback.digitalInputs);
+  gen::solo::Values& v = values_;
+  v.x3036_speed_feedback = roundToInt32(feedback.speedRpm);
+  v.x3037_position_feedback_incremental_encoder_and_hall_sensors = feedback.position;
+  v.x3034_quadrature_current_iq = sfxtFromDouble(feedback.iqA);
+  v.x3035_direct_current_magnetizing_current_id = sfxtFromDouble(feedback.idA);
+  v.x302f_phase_a_current = sfxtFromDouble(feedback.phaseACurrentA);
+  v.x3030_phase_b_current = sfxtFromDouble(feedback.phaseBCurrentA);
+  v.x302d_phase_a_voltage = sfxtFromDouble(feedback.phaseAVoltageV);
+  v.x302e_phase_b_voltage = sfxtFromDouble(feedback.phaseBVoltageV);
+  v.x3031_bus_voltage_input_supply_battery = sfxtFromDouble(feedback.busVoltageV);
+  v.x3032_dc_motor_current_im = sfxtFromDouble(feedback.motorCurrentA);
+  v.x3033_dc_motor_voltage_vm = sfxtFromDouble(feedback.motorVoltageV);
+  v.x3038_motor_s_angle = sfxtFromDouble(feedback.anglePerUnit);
+  v.x3039_board_temperature = sfxtFromDouble(feedback.boardTemperatureC);
+  v.x3049_digital_inputs_register = feedback.digitalInputs;
   if ((feedback.faults & ~errors_.value()) != 0U) {
     errors_.set(feedback.faults);  // a new fault event (also after the host cleared it)
   }

@@ -14,8 +14,12 @@
 #include "costa/node.hpp"
 #include "drive_backend.hpp"
 #include "solo_error_register.hpp"
+#include "solo_od.hpp"
 
 namespace costa::solo {
+
+/// The node of a SOLO: its generated dictionary, sized by it.
+using SoloNode = NodeInstance<gen::solo::Values, gen::solo::Capacity>;
 
 class SoloDevice : public ObjectHook, public NodeEvents {
  public:
@@ -24,7 +28,7 @@ class SoloDevice : public ObjectHook, public NodeEvents {
 
   /// Attaches itself to `node`. `powerOnNodeId` is the address when 0x3001 holds nothing
   /// stored, or always when `nodeIdGiven` (DeviceConfig::nodeIdGiven: costa-slave --node-id).
-  SoloDevice(Node& node, DriveBackend& drive, uint8_t powerOnNodeId, bool nodeIdGiven) noexcept;
+  SoloDevice(SoloNode& node, DriveBackend& drive, uint8_t powerOnNodeId, bool nodeIdGiven) noexcept;
 
   /// Runs the drive up to `now`; returns the next step.
   Microseconds process(Microseconds now) noexcept;
@@ -50,10 +54,10 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   DriveCommand command() const noexcept;
   void publish(const DriveFeedback& feedback) noexcept;
   void storeSfxt(uint16_t index, double value) noexcept;
-  double readSfxt(uint16_t index) const noexcept;
   uint32_t readU32(uint16_t index) const noexcept;
 
   Node& node_;
+  gen::solo::Values& values_;
   DriveBackend& drive_;
   SoloErrorRegister errors_;
   uint8_t powerOnNodeId_;

@@ -16,12 +16,8 @@ constexpr BitReport kReports[7] = {
 
 }  // namespace
 
-uint32_t SoloErrorRegister::value() const noexcept {
-  return static_cast<uint32_t>(node_.dictionary().readUnsigned(kIndex, 0, 0));
-}
-
 void SoloErrorRegister::assign(uint32_t bits) noexcept {
-  node_.dictionary().storeUnsigned(kIndex, 0, bits);
+  value_ = bits;
   for (uint8_t bit = 0; bit < 7U; ++bit) {
     const uint32_t mask = 1U << bit;
     if ((bits & mask) != 0U && (reported_ & mask) == 0U) {

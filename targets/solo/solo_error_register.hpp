@@ -25,17 +25,19 @@ class SoloErrorRegister {
   static constexpr uint32_t kOverCurrent = 1U << 0;
   static constexpr uint32_t kCommunicationLost = 1U << 5;
 
-  explicit SoloErrorRegister(Node& node) noexcept : node_(node) {}
+  /// `value` is 0x3020's value in the node's dictionary.
+  SoloErrorRegister(Node& node, uint32_t& value) noexcept : node_(node), value_(value) {}
 
   /// Makes 0x3020 equal to `bits`: newly set bits raise their EMCY condition (one EMCY each),
   /// cleared bits clear it; 0x1001 follows.
   void assign(uint32_t bits) noexcept;
   /// Sets more bits (devices faults).
   void set(uint32_t bits) noexcept { assign(value() | bits); }
-  uint32_t value() const noexcept;
+  uint32_t value() const noexcept { return value_; }
 
  private:
   Node& node_;
+  uint32_t& value_;
   uint32_t reported_ = 0;  ///< bits whose EMCY condition is raised
 };
 

@@ -14,7 +14,7 @@ namespace costa::solo {
 
 class SoloTarget {
  public:
-  using Dictionary = NodeInstance<gen::solo::Values, gen::solo::Capacity>;
+  using Dictionary = SoloNode;
 
   /// One line for costa-slave --list-devices.
   static constexpr const char* kSummary =

@@ -140,11 +140,14 @@ class ExampleOutputTest(unittest.TestCase):
                 self.assertIn(literal, self.cpp)
         # RAM defaults: the non-zero ones only, numbers of up to 4 bytes as their bits, the
         # rest (64-bit numbers, strings, octets) as bytes of kDefaultBytes.
-        for record in ("{offsetof(Values, x1014_cob_id_emcy), 4, 0x80U},  // 0x1014:0",
-                       "X2000Integers, int16), 2, 0x8000U},  // 0x2000:2",
-                       "X2000Integers, int32), 4, 0x80000000U},  // 0x2000:3",
-                       "X2000Integers, int64), 8, 0x0U},  // 0x2000:4",
-                       "{offsetof(Values, x2001_real32_value), 4, 0x40490FD0U},  // 0x2001:0",
+        number = " | costa::od::DefaultValue::kNumeric"
+        for record in ("{offsetof(Values, x1014_cob_id_emcy), 4" + number + ", 0x80U},  "
+                       "// 0x1014:0",
+                       "X2000Integers, int16), 2" + number + ", 0x8000U},  // 0x2000:2",
+                       "X2000Integers, int32), 4" + number + ", 0x80000000U},  // 0x2000:3",
+                       "X2000Integers, int64), 8" + number + ", 0x0U},  // 0x2000:4",
+                       "{offsetof(Values, x2001_real32_value), 4" + number + ", 0x40490FD0U},  "
+                       "// 0x2001:0",
                        "{offsetof(Values, x2003_serial_text), 21, 0x18U},  // 0x2003:0"):
             with self.subTest(record=record):
                 self.assertIn(record, self.cpp)

@@ -3,11 +3,11 @@
 // 7.5.2.39). Costa maps whole entries at byte granularity: an entry's mapping length must equal
 // its size in bits.
 //
-// An entry is copied straight between the frame and the dictionary's RAM block unless it needs
-// more: an RPDO entry with a hook (the application's or a service's), with limits, a BOOLEAN,
-// or a stored entry when writes are observed (save on write); a TPDO entry in ROM. Those go
-// through ObjectAccess (hook, checks) and the dictionary. Hooks attached later take effect when
-// the mapping is resolved again (PdoEngine::refreshMappings()).
+// An entry is copied straight between the frame and the dictionary's value blocks unless it
+// needs more: an RPDO entry with a hook (the application's or a service's), with limits, a
+// BOOLEAN, or a stored entry when writes are observed (save on write); a TPDO entry of a
+// `$NODEID` constant. Those go through ObjectAccess (hook, checks) and the dictionary. Hooks
+// attached later take effect when the mapping is resolved again (PdoEngine::refreshMappings()).
 //
 // Context: the one that runs the node. No allocation. pack()/unpack() are O(mapped entries) plus
 // a lookup and the hook's cost for each entry that needs more than a copy.
@@ -51,6 +51,7 @@ class PdoMap {
     bytes_ = 0;
     accessMask_ = 0;
     skipMask_ = 0;
+    romMask_ = 0;
   }
   size_t bytes() const noexcept { return bytes_; }
   size_t count() const noexcept { return count_; }
@@ -62,7 +63,7 @@ class PdoMap {
   /// Copies the mapped values into `out` (bytes() bytes), all in one call, so a frame never
   /// mixes two writes of an entry.
   void pack(const ObjectAccess& access, uint8_t* out) const noexcept {
-    if (accessMask_ != 0U) {
+    if ((accessMask_ | romMask_) != 0U) {
       packThroughAccess(access, out);
       return;
     }
@@ -115,6 +116,7 @@ class PdoMap {
   };
   bool needsAccess(size_t slot) const noexcept { return (accessMask_ & (1U << slot)) != 0U; }
   bool skipped(size_t slot) const noexcept { return (skipMask_ & (1U << slot)) != 0U; }
+  bool inRom(size_t slot) const noexcept { return (romMask_ & (1U << slot)) != 0U; }
   od::EntryRef locate(const ObjectAccess& access, size_t slot) const noexcept;
 
   Slot slots_[kMaxEntries] = {};
@@ -122,6 +124,7 @@ class PdoMap {
   uint8_t bytes_ = 0;
   uint8_t accessMask_ = 0;  ///< bit i: slot i goes through ObjectAccess
   uint8_t skipMask_ = 0;    ///< bit i: slot i is a dummy entry (RPDO)
+  uint8_t romMask_ = 0;     ///< bit i: slot i is copied from the constants block (TPDO)
 };
 
 }  // namespace costa

@@ -46,15 +46,20 @@ struct Limits {
 using RealLimitCheck = AbortCode (*)(DataType type, uint64_t raw, const Limits& limits);
 AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noexcept;
 
-/// A non-zero default of the RAM block: `size` bytes at `offset`. A number of up to 4 bytes is
-/// `value` itself (stored in the CPU's byte order); anything longer (strings, octet strings,
-/// 64-bit numbers) is the `size` little-endian bytes at Definition::defaultBytes + `value`.
-/// Every byte no DefaultValue covers defaults to zero. A `$NODEID` default is held without the
-/// node-id.
+/// A non-zero default of the RAM block: `bytes()` bytes at `offset`. A number (numeric()) of up
+/// to 4 bytes is `value` itself, stored in the CPU's byte order; anything longer (strings,
+/// octet strings, 64-bit numbers) is the little-endian bytes at Definition::defaultBytes +
+/// `value`. Every byte no DefaultValue covers defaults to zero. A `$NODEID` default is held
+/// without the node-id.
 struct DefaultValue {
+  static constexpr uint16_t kNumeric = 0x8000;  ///< in `size`: the value is a number
+
   uint16_t offset;
-  uint16_t size;
+  uint16_t size;  ///< bytes, | kNumeric for a number
   uint32_t value;
+
+  constexpr size_t bytes() const noexcept { return size & ~kNumeric & 0xFFFFU; }
+  constexpr bool numeric() const noexcept { return (size & kNumeric) != 0U; }
 };
 
 /// True when `defaults` are in strictly increasing order of offsets (the generator checks its
@@ -126,6 +131,29 @@ struct Definition {
 /// table with this very function.
 constexpr uint32_t objectSlotOf(uint16_t index, uint8_t bits) noexcept {
   return ((static_cast<uint32_t>(index) * 40503U) & 0xFFFFU) >> (16U - bits);
+}
+
+/// True when the RAM values of `objects` lie in the order of their indices and sub-indices (the
+/// generator's layout): the values of a range of indices are then one range of the RAM block.
+/// The generator checks its tables with it at compile time; ObjectDictionary::restoreDefaults()
+/// depends on it.
+template <size_t N>
+constexpr bool ramInIndexOrder(const Object (&objects)[N]) noexcept {
+  uint32_t end = 0;
+  for (size_t i = 0; i < N; ++i) {
+    for (unsigned r = 0; r < objects[i].rowCount; ++r) {
+      const SubEntry& row = objects[i].rows[r];
+      if ((row.attributes & kInRom) != 0U || row.type == DataType::kDomain) {
+        continue;
+      }
+      if (row.offset < end) {
+        return false;
+      }
+      const uint32_t bytes = row.type == DataType::kVisibleString ? row.size + 1U : row.size;
+      end = row.offset + row.count * bytes;
+    }
+  }
+  return true;
 }
 
 /// Number of sub-indices an object has (sub-index 0 included).

@@ -123,6 +123,8 @@ class ObjectDictionary {
   template <typename Wanted>
   void restoreRows(const Object& object, Wanted wanted) noexcept;
   void restoreRow(const SubEntry& row) noexcept;
+  /// Adds the node-id to every value of a `$NODEID` row (after its defaults were written).
+  void addNodeId(const SubEntry& row) noexcept;
   AbortCode writeChecked(const EntryRef& ref, const uint8_t* source, size_t length) noexcept;
 
   const Definition* definition_;
