@@ -369,18 +369,11 @@ void ObjectDictionary::restoreRows(const Object& object, Wanted wanted) noexcept
   }
 }
 
-void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
-  // The RAM values of [first, last] are one range of the block (ramInIndexOrder): zero it,
-  // then write the non-zero defaults that fall in it, then add the node-id where it belongs.
-  const Definition& definition = *definition_;
-  size_t begin = SIZE_MAX;
-  size_t end = 0;
-  const bool whole = first == 0U && last == UINT16_MAX;
-  if (whole) {
-    begin = 0;
-    end = definition.valuesSize;
-  }
-  for (size_t i = 0; i < definition.objectCount && !whole; ++i) {
+namespace {
+// Calls visit(row) for every row of the objects whose index lies in [first, last].
+template <typename Visit>
+void forEachRowIn(const Definition& definition, uint16_t first, uint16_t last, Visit visit) {
+  for (size_t i = 0; i < definition.objectCount; ++i) {
     const Object& object = definition.objects[i];
     if (object.index > last) {
       break;  // objects are in the order of their indices
@@ -389,15 +382,29 @@ void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
       continue;
     }
     for (uint8_t r = 0; r < object.rowCount; ++r) {
-      const SubEntry& row = object.rows[r];
-      if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
-        continue;
-      }
-      if (begin == SIZE_MAX) {
-        begin = row.offset;
-      }
-      end = row.offset + row.count * storageBytes(row);
+      visit(object.rows[r]);
     }
+  }
+}
+}  // namespace
+
+void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
+  // The RAM values of [first, last] are one range of the block (ramInIndexOrder): zero it,
+  // then write the non-zero defaults that fall in it, then add the node-id where it belongs.
+  const Definition& definition = *definition_;
+  size_t begin = SIZE_MAX;
+  size_t end = 0;
+  if (first == 0U && last == UINT16_MAX) {
+    begin = 0;
+    end = definition.valuesSize;
+  } else {
+    forEachRowIn(definition, first, last, [&begin, &end](const SubEntry& row) {
+      if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
+        return;
+      }
+      begin = begin == SIZE_MAX ? row.offset : begin;
+      end = row.offset + row.count * storageBytes(row);
+    });
   }
   if (begin == SIZE_MAX) {
     return;
@@ -408,21 +415,11 @@ void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
        value < stop && value->offset < end; ++value) {
     writeDefault(definition, *value, values_ + value->offset);
   }
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const Object& object = definition.objects[i];
-    if (object.index > last) {
-      break;
+  forEachRowIn(definition, first, last, [this](const SubEntry& row) {
+    if ((row.attributes & (kNodeIdRelative | kInRom)) == kNodeIdRelative) {
+      addNodeId(row);
     }
-    if (object.index < first) {
-      continue;
-    }
-    for (uint8_t r = 0; r < object.rowCount; ++r) {
-      const SubEntry& row = object.rows[r];
-      if ((row.attributes & (kNodeIdRelative | kInRom)) == kNodeIdRelative) {
-        addNodeId(row);
-      }
-    }
-  }
+  });
 }
 
 void ObjectDictionary::restoreGroupDefaults(uint8_t group) noexcept {

@@ -13,6 +13,52 @@ uint64_t roundUp(uint64_t value, uint64_t alignment) noexcept {
   return (value + alignment - 1U) / alignment * alignment;
 }
 
+/// A stored group and the bytes its RAM values take.
+struct GroupBytes {
+  uint8_t group;
+  uint64_t bytes;
+};
+
+/// Adds `row` to the group list kept in order of group id (the regions' order). False when the
+/// row's group is new and the list is full.
+bool addRow(const od::SubEntry& row, GroupBytes* groups, size_t* count, size_t capacity) noexcept {
+  size_t at = 0;
+  while (at < *count && groups[at].group < row.group) {
+    ++at;
+  }
+  if (at == *count || groups[at].group != row.group) {
+    if (*count == capacity) {
+      return false;
+    }
+    for (size_t k = *count; k > at; --k) {
+      groups[k] = groups[k - 1U];
+    }
+    groups[at] = GroupBytes{row.group, 0};
+    ++*count;
+  }
+  if ((row.attributes & od::kInRom) == 0U && row.type != od::DataType::kDomain) {
+    groups[at].bytes += static_cast<uint64_t>(row.size) * row.count;
+  }
+  return true;
+}
+
+/// The groups that occur and the bytes each stores, in one pass over the rows; SIZE_MAX when
+/// there are more than `capacity`.
+size_t collectGroups(const od::Definition& definition, GroupBytes* groups,
+                     size_t capacity) noexcept {
+  size_t count = 0;
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    const od::Object& object = definition.objects[i];
+    for (size_t r = 0; r < object.rowCount; ++r) {
+      if (object.rows[r].group != od::kGroupNone &&
+          !addRow(object.rows[r], groups, &count, capacity)) {
+        return SIZE_MAX;
+      }
+    }
+  }
+  return count;
+}
+
 }  // namespace
 
 ParameterStore::ParameterStore(od::ObjectDictionary& dictionary, NvStorage& storage,
@@ -91,44 +137,14 @@ size_t ParameterStore::computeLayout(Region* regions, size_t* count) const noexc
     offset += 2U * slotSize;
     return true;
   };
-  // The groups that occur and the bytes each stores, in one pass over the rows, kept in order
-  // of group id (the regions' order).
-  struct GroupBytes {
-    uint8_t group;
-    uint64_t bytes;
-  };
   GroupBytes groups[kMaxRegions] = {};
-  size_t groupCount = 0;
-  const od::Definition& definition = dictionary_.definition();
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const od::Object& object = definition.objects[i];
-    for (size_t r = 0; r < object.rowCount; ++r) {
-      const od::SubEntry& row = object.rows[r];
-      if (row.group == od::kGroupNone) {
-        continue;
-      }
-      size_t at = 0;
-      while (at < groupCount && groups[at].group < row.group) {
-        ++at;
-      }
-      if (at == groupCount || groups[at].group != row.group) {
-        if (groupCount == kMaxRegions) {
-          return SIZE_MAX;  // more groups than regions
-        }
-        for (size_t k = groupCount; k > at; --k) {
-          groups[k] = groups[k - 1U];
-        }
-        groups[at] = GroupBytes{row.group, 0};
-        ++groupCount;
-      }
-      if ((row.attributes & od::kInRom) == 0U && row.type != od::DataType::kDomain) {
-        groups[at].bytes += static_cast<uint64_t>(row.size) * row.count;
-      }
-    }
+  const size_t groupCount = collectGroups(dictionary_.definition(), groups, kMaxRegions);
+  if (groupCount == SIZE_MAX) {
+    return SIZE_MAX;
   }
   for (size_t i = 0; i < groupCount; ++i) {
-    if (exceeds32Bits(groups[i].bytes) ||
-        !place(groups[i].group, definition.layoutId, static_cast<size_t>(groups[i].bytes))) {
+    if (exceeds32Bits(groups[i].bytes) || !place(groups[i].group, dictionary_.definition().layoutId,
+                                                 static_cast<size_t>(groups[i].bytes))) {
       return SIZE_MAX;
     }
   }

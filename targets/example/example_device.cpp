@@ -9,6 +9,9 @@ constexpr uint8_t kRestartUptime = 1;
 constexpr uint8_t kSelfTest = 3;
 }  // namespace
 
+// The scratch pad is left uninitialised on purpose: only its first scratchPadLength_ bytes count.
+// cppcheck-suppress uninitMemberVar ; the scratch pad's unused bytes mean nothing
+// NOLINTNEXTLINE(cppcoreguidelines-pro-type-member-init)
 ExampleDevice::ExampleDevice(Node& node, uint32_t serialNumber) noexcept
     : node_(node),
       serialNumber_(serialNumber),

@@ -9,7 +9,6 @@
 
 #include <stdint.h>
 
-#include "costa/can_controller_event.hpp"
 #include "costa/compiled_out.hpp"
 #include "costa/emcy_producer.hpp"
 #include "costa/error_control_profile.hpp"
@@ -18,6 +17,7 @@
 #include "costa/node_clock.hpp"
 #include "costa/node_events.hpp"
 #include "costa/node_guarding.hpp"
+#include "costa/port/can_controller_event.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/transmit_path.hpp"
 

@@ -1,8 +1,11 @@
-// A bit timing as CiA 305 (LSS) names it, and the CiA 305 standard bit timing table: the one
-// mapping between table entries and bit rates in Costa.
+// A bit timing as CiA 305 (LSS) names it: a table and an entry of it. The CiA 305 standard
+// table itself (entry <-> bit rate) is the port layer's (costa/port/can_bit_rate.hpp), which
+// drivers share.
 #pragma once
 
 #include <stdint.h>
+
+#include "costa/port/can_bit_rate.hpp"
 
 namespace costa {
 
@@ -22,43 +25,12 @@ inline bool operator!=(const LssBitTiming& a, const LssBitTiming& b) noexcept {
   return !(a == b);
 }
 
-/// Bit rate of an entry of the CiA 305 standard bit timing table, in bit/s; 0 for index 5
-/// (reserved) and for indices beyond 8 (9 is automatic bit rate detection).
-constexpr uint32_t cia305BitRate(uint8_t tableIndex) noexcept {
-  switch (tableIndex) {
-    case 0: return 1000000;
-    case 1: return 800000;
-    case 2: return 500000;
-    case 3: return 250000;
-    case 4: return 125000;
-    case 6: return 50000;
-    case 7: return 20000;
-    case 8: return 10000;
-    default: return 0;
-  }
-}
-
-/// Index of `bitsPerSecond` in the CiA 305 standard table, or -1 when the table has no entry
-/// with that rate.
-constexpr int cia305TableIndex(uint32_t bitsPerSecond) noexcept {
-  for (uint8_t index = 0; index <= 8U; ++index) {
-    if (bitsPerSecond != 0U && cia305BitRate(index) == bitsPerSecond) {
-      return index;
-    }
-  }
-  return -1;
-}
-
 /// Bit rate of `timing` in bit/s: its CiA 305 table rate, 0 when it has none (automatic bit
 /// rate detection, a reserved entry, a manufacturer-specific table).
 constexpr uint32_t bitRateOf(LssBitTiming timing) noexcept {
   return timing.tableSelector == 0U ? cia305BitRate(timing.tableIndex) : 0U;
 }
 
-static_assert(cia305TableIndex(500000) == 2);
-static_assert(cia305TableIndex(10000) == 8);
-static_assert(cia305TableIndex(0) == -1);
-static_assert(cia305TableIndex(100000) == -1);
 static_assert(bitRateOf(LssBitTiming{0, 3}) == 250000);
 static_assert(bitRateOf(LssBitTiming{128, 3}) == 0);
 

@@ -29,7 +29,6 @@
 #include <stdint.h>
 
 #include "costa/bit_timing_switch.hpp"
-#include "costa/can_controller_event.hpp"
 #include "costa/emcy_producer.hpp"
 #include "costa/error_control.hpp"
 #include "costa/frame_router.hpp"
@@ -46,6 +45,7 @@
 #include "costa/object_access.hpp"
 #include "costa/od/object_dictionary.hpp"
 #include "costa/pdo_engine.hpp"
+#include "costa/port/can_controller_event.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/sdo_server.hpp"
 #include "costa/service_objects.hpp"

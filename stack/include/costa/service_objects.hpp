@@ -53,9 +53,11 @@ class ServiceObjects {
 
  private:
   /// Table::of positions of the services with a prepareRead() of their own.
-  static constexpr uint32_t kReaders = (1U << 4U) |  // store commands (or their stand-in)
-                                       (features::kNodeGuarding ? 0U : 1U << 3U) |
-                                       (features::kHeartbeatConsumer ? 0U : 1U << 5U);
+  static constexpr uint32_t kStoreReader = 1U << 4U;  // store commands (or their stand-in)
+  static constexpr uint32_t kGuardingReader = features::kNodeGuarding ? 0U : 1U << 3U;
+  static constexpr uint32_t kConsumerReader = features::kHeartbeatConsumer ? 0U : 1U << 5U;
+  // cppcheck-suppress badBitmaskCheck ; a service's bit is zero when the service is compiled in
+  static constexpr uint32_t kReaders = kStoreReader | kGuardingReader | kConsumerReader;
   /// Which service owns 0x1000 + n: 0 none, else a position in Table::of.
   static constexpr uint8_t kOwners[0x20] = {
       0, 0, 0, 1, 0, 2, 2, 2, 0, 0, 0, 0, 3, 3, 0, 0,  // 0x1003 EMCY; 0x1005-7 SYNC; 0x100C/D

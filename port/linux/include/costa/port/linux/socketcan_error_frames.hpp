@@ -13,7 +13,7 @@
 #include <linux/can.h>
 #include <stddef.h>
 
-#include "costa/node.hpp"
+#include "costa/port/can_controller_event.hpp"
 
 namespace costa::port {
 

@@ -8,7 +8,7 @@
 
 #include <stdint.h>
 
-#include "costa/lss_bit_timing.hpp"
+#include "costa/port/can_bit_rate.hpp"
 #include "costa/port/stm32/bxcan_registers.hpp"
 
 namespace costa::port::stm32 {
@@ -103,7 +103,7 @@ constexpr BxCanBitTiming bxCanBitTiming(uint32_t clockHz, uint32_t bitRate,
 }
 
 /// The CiA 305 table (LSS "configure bit timing", table selector 0) is the stack's:
-/// costa::cia305BitRate() in costa/lss_bit_timing.hpp.
+/// costa::cia305BitRate() in costa/port/can_bit_rate.hpp.
 using costa::cia305BitRate;
 
 /// Timing for an entry of the CiA 305 table (LSS "configure bit timing", table selector 0).

@@ -16,8 +16,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "costa/node.hpp"
 #include "costa/port/can_bit_rate.hpp"
+#include "costa/port/can_controller_event.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/port/stm32/bxcan_registers.hpp"
 

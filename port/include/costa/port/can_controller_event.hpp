@@ -1,4 +1,5 @@
-// What a CAN controller's driver reports to the node, and a bounded list of such reports.
+// What a CAN controller's driver reports to the node (Node::onControllerEvent), and a bounded
+// list of such reports. A port type: drivers need nothing of the stack to report them.
 #pragma once
 
 #include <stddef.h>
