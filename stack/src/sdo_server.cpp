@@ -127,16 +127,11 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
   if (expedited) {
     const size_t length = sizeIndicated ? 4U - ((request[0] >> 2U) & 0x03U)
                                         : unspecifiedExpeditedLength(ref_, request + 4);
-    const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
-    if (written != AbortCode::kNone) {
-      sendAbort(index_, subIndex_, written);
-      return;
-    }
-    CanFrame response;
-    channel_.address(response);
-    copyBytes(response.data, request, 4);  // the multiplexer as asked
-    response.data[0] = kScsInitiateDownloadResponse;
-    channel_.send(response);
+    downloadExpedited(request, length);
+    return;
+  }
+  if (!sizeIndicated && (request[0] & 0x0CU) != 0U && profile_.expeditedByCountAlone) {
+    downloadExpedited(request, 4U - ((request[0] >> 2U) & 0x03U));
     return;
   }
   const AbortCode begun =
@@ -150,6 +145,31 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
   armTimeout(now);
   const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
   respond(response);
+}
+
+COSTA_HOT_INLINE void SdoServer::downloadExpedited(const uint8_t* request, size_t length) noexcept {
+  AbortCode written = writer_.writeWhole(ref_, request + 4, length);
+  if (written != AbortCode::kNone) {
+    written = retryWithLowBytes(written, request + 4, length);
+    if (written != AbortCode::kNone) {
+      sendAbort(index_, subIndex_, written);
+      return;
+    }
+  }
+  CanFrame response;
+  channel_.address(response);
+  copyBytes(response.data, request, 4);  // the multiplexer as asked
+  response.data[0] = kScsInitiateDownloadResponse;
+  channel_.send(response);
+}
+
+AbortCode SdoServer::retryWithLowBytes(AbortCode refusal, const uint8_t* data,
+                                       size_t length) noexcept {
+  if (refusal != AbortCode::kLengthTooHigh || !profile_.expeditedKeepsLowBytes ||
+      !od::isNumeric(ref_.type()) || length <= ref_.size()) {
+    return refusal;
+  }
+  return writer_.writeWhole(ref_, data, ref_.size());  // little-endian: the low bytes first
 }
 
 COSTA_HOT_INLINE void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcept {
@@ -188,9 +208,20 @@ COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcep
   channel_.send(response);
 }
 
+bool SdoServer::onShortRequest(const CanFrame& frame, Microseconds now) noexcept {
+  const uint8_t shortest = profile_.shortestRequest == 0U ? 1U : profile_.shortestRequest;
+  if (frame.rtr || frame.dlc >= 8U || frame.dlc < shortest) {
+    return false;  // CiA 301: an SDO frame has 8 bytes; RTR frames are no SDO requests
+  }
+  CanFrame whole = frame;
+  fillBytes(whole.data + frame.dlc, 0, 8U - frame.dlc);  // the bytes it lacks count as 0
+  whole.dlc = 8;
+  return onRequest(whole, now);
+}
+
 bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
   if (frame.dlc != 8U || frame.rtr) {
-    return false;
+    return onShortRequest(frame, now);
   }
   lastCall_ = now;
   const uint8_t* request = frame.data;
