@@ -12,9 +12,11 @@ namespace costa {
 
 class BitTimingSwitch {
  public:
-  /// `control` may be null: the node then only records the timing in use.
-  BitTimingSwitch(CanBitRateControl* control, LssBitTiming initial) noexcept
-      : control_(control), inUse_(initial), pending_(initial) {}
+  /// `control` may be null: the node then only records the timing in use. `table`: the
+  /// device's own bit timing table (selector 128), or none.
+  BitTimingSwitch(CanBitRateControl* control, LssBitTiming initial,
+                  BitRateTable table = {}) noexcept
+      : control_(control), table_(table), inUse_(initial), pending_(initial) {}
 
   /// The timing in use: with a controller to re-time, the one it last accepted.
   LssBitTiming inUse() const noexcept { return inUse_; }
@@ -23,11 +25,11 @@ class BitTimingSwitch {
   void setPending(LssBitTiming timing) noexcept { pending_ = timing; }
 
   /// Re-times the controller (when there is one) and makes `timing` the one in use if it
-  /// accepted. A timing without a CiA 305 bit rate, or one the controller refuses, leaves the
-  /// timing in use as it was.
+  /// accepted. A timing without a bit rate (CiA 305's or the device's own table's), or one the
+  /// controller refuses, leaves the timing in use as it was.
   void switchTo(LssBitTiming timing) noexcept {
     if (control_ != nullptr) {
-      const uint32_t rate = bitRateOf(timing);
+      const uint32_t rate = bitRateOf(timing, table_);
       if (rate == 0U || !control_->setBitRate(rate)) {
         return;
       }
@@ -45,6 +47,7 @@ class BitTimingSwitch {
 
  private:
   CanBitRateControl* control_;
+  BitRateTable table_;
   LssBitTiming inUse_;
   LssBitTiming pending_;
 };
