@@ -17,7 +17,8 @@ std::vector<DeviceEntry> listedDevices() {
   devices::forEachDevice([&table](auto device) {
     using Composition = typename decltype(device)::Composition;
     table.push_back(DeviceEntry{device.name, Composition::kSummary, Composition::settings().lss,
-                                Composition::kStorageBytes, &build<Composition>});
+                                devices::highestNodeId<Composition>(), Composition::kStorageBytes,
+                                &build<Composition>});
   });
   return table;
 }

@@ -15,8 +15,9 @@ namespace costa::host {
 struct DeviceEntry {
   const char* name;
   const char* summary;
-  bool lss;             ///< it has LSS: it may start without a node-id (--node-id 255)
-  size_t storageBytes;  ///< its non-volatile memory: the size of the --storage file
+  bool lss;               ///< it has LSS: it may start without a node-id (--node-id 255)
+  uint8_t highestNodeId;  ///< it takes node-ids 1..highestNodeId (127 but for a few devices)
+  size_t storageBytes;    ///< its non-volatile memory: the size of the --storage file
   /// Builds the device with `config` over `storage` (may be null; `config.storage` is it).
   std::unique_ptr<DeviceTarget> (*build)(CanTransmitter& can, const DeviceConfig& config,
                                          std::unique_ptr<port::FileStorage> storage);
