@@ -56,10 +56,13 @@ class Reader {
     uint32_t n = 0;
     for (size_t i = 0; i < w.length; ++i) {
       const char c = w.begin[i];
-      if (c < '0' || c > '9' || n > (largest - static_cast<uint32_t>(c - '0')) / 10U) {
+      if (c < '0' || c > '9' || n > largest / 10U) {
         return false;
       }
-      n = n * 10U + static_cast<uint32_t>(c - '0');
+      n = n * 10U + static_cast<uint32_t>(c - '0');  // at most largest + 9: no overflow
+      if (n > largest) {
+        return false;
+      }
     }
     *value = n;
     return true;
