@@ -37,7 +37,7 @@ class SdoServer {
   /// Handles a frame received on 0x600+id. Frames with DLC other than 8 and RTR frames are
   /// ignored, as CiA 301 requires: returns false for them. O(log n) in the dictionary size
   /// plus the hook's cost.
-  bool onRequest(const CanFrame& frame, Microseconds now) noexcept;
+  [[nodiscard]] bool onRequest(const CanFrame& frame, Microseconds now) noexcept;
 
   /// Aborts a transfer that has been silent longer than the timeout (0x05040000); queues
   /// further segments of a block upload sub-block as the transmit queue has room.
