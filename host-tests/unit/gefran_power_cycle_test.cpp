@@ -109,6 +109,54 @@ TEST_F(GraPowerCycle, LoadBringsAStoredNodeIdBackToTheFactoryOne) {
             "");
 }
 
+// "load" to 0x1011:01 restores every group and discards the stored LSS configuration (E21). When
+// the EEPROM fails after the groups and before the LSS record is discarded, the answer is
+// 0x08000020, not a confirmation: the stored node-id is still there.
+TEST_F(GraPowerCycle, ALoadThatCannotDiscardTheLssRecordAnswers08000020) {
+  powerOn();
+  ASSERT_EQ(play(R"(
+    tx 77F [1] 00
+    tx 1FF [8] 00 00 00 00 FF FF FF 00
+    rx 67F [8] 2F 99 59 02 05 00 00 00     # node-id 5, saved
+    tx 5FF [8] 60 99 59 02 00 00 00 00
+    rx 67F [8] 23 99 59 03 73 61 76 65
+    tx 5FF [8] 60 99 59 03 00 00 00 00
+    rx 67F [8] 2F 00 50 00 00 00 00 00     # no automatic start, saved
+    tx 5FF [8] 60 00 50 00 00 00 00 00
+    rx 67F [8] 23 10 10 01 73 61 76 65
+    tx 5FF [8] 60 10 10 01 00 00 00 00
+  )"),
+            "");
+  const std::vector<uint8_t> saved(eeprom_.bytes(), eeprom_.bytes() + eeprom_.size());
+  // The fewest programmed bytes with which the load succeeds; one fewer leaves the LSS record's
+  // last byte unwritten.
+  const auto loadWithPowerFor = [&](size_t bytes) {
+    std::copy(saved.begin(), saved.end(), eeprom_.bytes());
+    eeprom_.restorePower();
+    powerOn();
+    EXPECT_EQ(play("tx 705 [1] 00\nwait 100\nsilence"), "");  // no automatic start
+    eeprom_.cutPowerAfter(bytes);
+    return play(R"(
+      rx 605 [8] 23 11 10 01 6C 6F 61 64
+      tx 585 [8] 60 11 10 01 00 00 00 00
+    )");
+  };
+  size_t enough = 0;
+  while (enough < eeprom_.size() && !loadWithPowerFor(enough).empty()) {
+    ++enough;
+  }
+  ASSERT_GT(enough, 0U);
+  ASSERT_LT(enough, eeprom_.size());
+  EXPECT_NE(loadWithPowerFor(enough - 1U).find("80 11 10 01 20 00 00 08"), std::string::npos);
+  eeprom_.restorePower();
+  powerOn();
+  EXPECT_EQ(play(R"(
+    tx 705 [1] 00                          # the stored node-id was not discarded,
+    tx 185 [8] 00 00 00 00 FF FF FF 00     # the groups were: automatic start again
+  )"),
+            "");
+}
+
 /// Saves one PARA value, damages its bytes in the file and powers on again.
 class GraDamagedParameters : public GraPowerCycle,
                              public ::testing::WithParamInterface<const char*> {};

@@ -106,5 +106,29 @@ TEST_F(SoloFactoryReset, ZeroDoesNothing) {
             "");
 }
 
+TEST_F(SoloFactoryReset, AParameterMemoryThatFailsAnswers08000020) {
+  ASSERT_EQ(powerUpAndPlay(R"(
+    rx 601 [8] 23 11 30 00 F4 01 00 00   # 500 rpm, kept
+    tx 581 [8] 60 11 30 00 00 00 00 00
+  )"),
+            "");
+  eeprom_.cutPowerAfter(0);  // from now on nothing reaches the EEPROM
+  EXPECT_EQ(powerUpAndPlay(R"(
+    rx 601 [8] 23 11 30 00 58 02 00 00   # 600 rpm: in force, but not kept
+    tx 581 [8] 80 11 30 00 20 00 00 08
+    rx 601 [8] 40 11 30 00 00 00 00 00
+    tx 581 [8] 42 11 30 00 58 02 00 00
+    rx 601 [8] 23 14 30 00 01 00 00 00   # reset factory: the stored parameters stay
+    tx 581 [8] 80 14 30 00 20 00 00 08
+  )"),
+            "");
+  eeprom_.restorePower();
+  EXPECT_EQ(powerUpAndPlay(R"(
+    rx 601 [8] 40 11 30 00 00 00 00 00
+    tx 581 [8] 42 11 30 00 F4 01 00 00   # what was kept before the failure
+  )"),
+            "");
+}
+
 }  // namespace
 }  // namespace costa::test

@@ -107,5 +107,26 @@ TEST_F(Trace, NetworkManagementAndErrorControl) {
   EXPECT_EQ(describe("7E5 [8] 04 01 00 00 00 00 00 00"), "LSS request switch state global");
 }
 
+// The tracer reads the local node's frames with the node's own profile (here the SOLO's EMCY
+// layout), other nodes' frames as CiA 301.
+TEST(TraceWithProfile, EmcyWithTheRegisterInTheFourthByte) {
+  DeviceProfile profile;
+  profile.emcy.layout = EmcyLayout::kErrorRegisterInFourthByte;
+  FrameTracer tracer(nullptr, nullptr, profile);
+  const auto describe = [&tracer](const char* text) {
+    CanFrame frame;
+    std::string error;
+    EXPECT_TRUE(parseFrame(text, &frame, &error)) << error;
+    return tracer.describe(frame, 0x0A);
+  };
+  EXPECT_EQ(describe("08A [8] 00 00 00 08 00 00 00 00"), "EMCY node 10 register 0x08");
+  EXPECT_EQ(describe("08A [8] 00 00 00 00 00 00 00 00"), "EMCY node 10 register 0x00");
+  EXPECT_EQ(describe("08A [8] 00 00 00 08 00 00 01 00"),
+            "EMCY node 10 register 0x08 data 00 00 00 08 00 00 01 00");
+  EXPECT_EQ(describe("08A [2] 00 00"), "EMCY node 10 data 00 00");
+  EXPECT_EQ(describe("081 [8] 30 81 11 00 00 00 00 00"),
+            "EMCY node 1 code 0x8130 register 0x11 data 00 00 00 00 00");
+}
+
 }  // namespace
 }  // namespace costa::host

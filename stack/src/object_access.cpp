@@ -19,10 +19,10 @@ AbortCode ObjectAccess::writeObserved(const od::EntryRef& ref, const uint8_t* da
     copyBytes(before, current, ref.size());
   }
   const AbortCode result = hookFor(ref).write(dictionary_, ref, data, length);
-  if (result == AbortCode::kNone) {
-    observer_->onWritten(ref, !comparable || compareBytes(before, current, ref.size()) != 0);
+  if (result != AbortCode::kNone) {
+    return result;
   }
-  return result;
+  return observer_->onWritten(ref, !comparable || compareBytes(before, current, ref.size()) != 0);
 }
 
 AbortCode ObjectAccess::readStream(const od::EntryRef& ref, size_t offset, uint8_t* destination,

@@ -22,16 +22,14 @@ PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept {
 size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdoMappings& fixed,
                          uint16_t communicationIndex, uint32_t* values) noexcept {
   const auto mappingIndex = static_cast<uint16_t>(communicationIndex + 0x200U);
-  const od::Object* object = dictionary.findObject(mappingIndex);
-  if (object != nullptr) {
-    const od::EntryRef countRef = od::locate(*object, 0);
-    auto count = countRef.valid() ? static_cast<size_t>(dictionary.readUnsigned(countRef)) : 0U;
+  if (dictionary.findObject(mappingIndex) != nullptr) {
+    auto count = static_cast<size_t>(dictionary.readUnsigned(mappingIndex, 0, 0));
     if (count > PdoMap::kMaxEntries) {
       count = PdoMap::kMaxEntries;
     }
     for (size_t i = 0; i < count; ++i) {
-      const od::EntryRef ref = od::locate(*object, static_cast<uint8_t>(i + 1U));
-      values[i] = ref.valid() ? static_cast<uint32_t>(dictionary.readUnsigned(ref)) : 0U;
+      values[i] = static_cast<uint32_t>(
+          dictionary.readUnsigned(mappingIndex, static_cast<uint8_t>(i + 1U), 0));
     }
     return count;
   }

@@ -82,7 +82,7 @@ AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, si
     entry.length = static_cast<uint8_t>((values[i] & 0xFFU) / 8U);
     resolved.bytes_ = static_cast<uint8_t>(resolved.bytes_ + entry.length);
     if (isDummy(index)) {
-      resolved.skipMask_ = static_cast<uint8_t>(resolved.skipMask_ | (1U << slot));
+      resolved.markMask_ = static_cast<uint8_t>(resolved.markMask_ | (1U << slot));
       continue;
     }
     const od::EntryRef ref = dictionary.find(index, subIndex);
@@ -98,7 +98,7 @@ AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, si
     if (copied) {
       entry.where = static_cast<uint16_t>(ref.offset());
       if (constant) {
-        resolved.romMask_ = static_cast<uint8_t>(resolved.romMask_ | (1U << slot));
+        resolved.markMask_ = static_cast<uint8_t>(resolved.markMask_ | (1U << slot));
       }
     } else {
       entry.where = index;
@@ -115,11 +115,9 @@ od::EntryRef PdoMap::locate(const ObjectAccess& access, size_t slot) const noexc
 }
 
 bool PdoMap::contains(const od::EntryRef& ref) const noexcept {
+  // A TPDO's map (the only one asked): no dummy entries; inRom() tells the two value blocks apart.
   for (size_t i = 0; i < count_; ++i) {
     const Slot& slot = slots_[i];
-    if (skipped(i)) {
-      continue;
-    }
     const bool same = needsAccess(i) ? slot.where == ref.index() && slot.subIndex == ref.subIndex()
                                      : ref.inRom() == inRom(i) && slot.where == ref.offset();
     if (same) {

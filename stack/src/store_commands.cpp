@@ -53,8 +53,8 @@ AbortCode StoreCommands::write(od::ObjectDictionary& dictionary, const od::Entry
   if (result != StoreResult::kOk) {
     return AbortCode::kCannotStore;
   }
-  if (!store && ref.subIndex() == 1U && listener_ != nullptr) {
-    listener_->onRestoreAll();
+  if (!store && ref.subIndex() == 1U && listener_ != nullptr && !listener_->onRestoreAll()) {
+    return AbortCode::kCannotStore;
   }
   return AbortCode::kNone;
 }

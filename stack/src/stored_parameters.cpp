@@ -23,7 +23,8 @@ StoredParameters::StoredParameters(od::ObjectDictionary& dictionary, const NodeS
 
 void StoredParameters::layOut() noexcept {
   if (settings_.storage != nullptr) {
-    store_.reserveRecord(kLssRecord, kLssRecordLength);
+    // Refused only when laid out again (the record is there already): nothing to do then.
+    (void)store_.reserveRecord(kLssRecord, kLssRecordLength);
     ready_ = store_.layOut();
   }
 }
@@ -103,16 +104,18 @@ WriteObserver* StoredParameters::autoSave() noexcept {
   return features::kParameterStorage && settings_.saveParametersOnWrite ? this : nullptr;
 }
 
-void StoredParameters::onWritten(const od::EntryRef& ref, bool changed) noexcept {
-  if (changed && ref.group() != od::kGroupNone && ready_) {
-    store_.save(ref.group());
+AbortCode StoredParameters::onWritten(const od::EntryRef& ref, bool changed) noexcept {
+  if (!changed || ref.group() == od::kGroupNone || !ready_) {
+    return AbortCode::kNone;
   }
+  return store_.save(ref.group()) == StoreResult::kOk ? AbortCode::kNone : AbortCode::kCannotStore;
 }
 
-void StoredParameters::onRestoreAll() noexcept {
-  if (settings_.restoreAllIncludesLss && ready_) {
-    store_.invalidateRecord(kLssRecord);
+bool StoredParameters::onRestoreAll() noexcept {
+  if (!settings_.restoreAllIncludesLss || !ready_) {
+    return true;
   }
+  return store_.invalidateRecord(kLssRecord) == StoreResult::kOk;
 }
 
 }  // namespace costa

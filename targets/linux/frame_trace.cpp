@@ -51,8 +51,9 @@ const char* stateName(uint8_t value) {
 
 }  // namespace
 
-FrameTracer::FrameTracer(const od::ObjectDictionary* dictionary, const od::NameTable* names)
-    : dictionary_(dictionary), names_(names) {}
+FrameTracer::FrameTracer(const od::ObjectDictionary* dictionary, const od::NameTable* names,
+                         const DeviceProfile& profile)
+    : dictionary_(dictionary), names_(names), profile_(profile) {}
 
 std::string FrameTracer::nameOf(uint16_t index, uint8_t subIndex) const {
   if (names_ == nullptr) {
@@ -120,7 +121,7 @@ std::string FrameTracer::describe(const CanFrame& frame, uint8_t localNodeId) {
     return frame.dlc >= 1U ? "SYNC counter " + std::to_string(frame.data[0]) : "SYNC";
   }
   if (id > 0x080 && id <= 0x0FF) {
-    return describeEmcy(frame);
+    return describeEmcy(frame, id - 0x080U == localNodeId);
   }
   if (id >= 0x180 && id <= 0x57F) {
     return frame.rtr ? "PDO request (RTR)" : "PDO";
@@ -156,8 +157,22 @@ std::string FrameTracer::describeNmt(const CanFrame& frame) const {
   }
 }
 
-std::string FrameTracer::describeEmcy(const CanFrame& frame) const {
+std::string FrameTracer::describeEmcy(const CanFrame& frame, bool local) const {
   std::string text = "EMCY node " + std::to_string(frame.id - 0x080U);
+  if (local && profile_.emcy.layout == EmcyLayout::kErrorRegisterInFourthByte) {
+    // 00 00 00 ER 00 00 00 00: no error code; the register alone.
+    if (frame.dlc >= 4U) {
+      text += " register " + hex(frame.data[3], 2);
+    }
+    bool other = false;  // a byte besides the register that is not zero
+    for (size_t i = 0; i < frame.dlc; ++i) {
+      other = other || (i != 3U && frame.data[i] != 0U);
+    }
+    if (frame.dlc < 4U || other) {
+      text += " data " + bytes(frame.data, frame.dlc);
+    }
+    return text;
+  }
   if (frame.dlc >= 3U) {
     text += " code " + hex(loadU16(frame.data), 4) + " register " + hex(frame.data[2], 2);
   }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "costa/device_profile.hpp"
 #include "costa/od/definition.hpp"
 #include "costa/od/object_dictionary.hpp"
 #include "costa/port/can_frame.hpp"
@@ -17,8 +18,10 @@ namespace costa::host {
 class FrameTracer {
  public:
   /// `dictionary` (may be null) is the local node's, used to format values; `names` (may be
-  /// null) to name objects.
-  FrameTracer(const od::ObjectDictionary* dictionary, const od::NameTable* names);
+  /// null) to name objects; `profile` says how the local node encodes its frames (the same
+  /// per-service profiles its services are given). Other nodes' frames are read as CiA 301.
+  FrameTracer(const od::ObjectDictionary* dictionary, const od::NameTable* names,
+              const DeviceProfile& profile = DeviceProfile{});
 
   /// Meaning of `frame` on a bus where the local node has `localNodeId`.
   std::string describe(const CanFrame& frame, uint8_t localNodeId);
@@ -28,7 +31,7 @@ class FrameTracer {
 
  private:
   std::string describeNmt(const CanFrame& frame) const;
-  std::string describeEmcy(const CanFrame& frame) const;
+  std::string describeEmcy(const CanFrame& frame, bool local) const;
   std::string describeErrorControl(const CanFrame& frame);
   std::string describeSdoRequest(const CanFrame& frame, bool local);
   std::string describeSdoResponse(const CanFrame& frame, bool local);
@@ -43,6 +46,7 @@ class FrameTracer {
 
   const od::ObjectDictionary* dictionary_;
   const od::NameTable* names_;
+  DeviceProfile profile_;
   uint8_t guardRequested_[128] = {};
   // Segmented SDO transfer being watched.
   bool uploading_ = false;

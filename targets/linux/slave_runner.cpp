@@ -35,7 +35,8 @@ class Tracer {
 
   void attach(DeviceTarget* target) {
     target_ = target;
-    decoder_ = std::make_unique<FrameTracer>(&target->node().dictionary(), target->names());
+    decoder_ = std::make_unique<FrameTracer>(&target->node().dictionary(), target->names(),
+                                             target->node().profile());
   }
 
   void line(const char* direction, const CanFrame& frame) {

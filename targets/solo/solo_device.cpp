@@ -152,8 +152,8 @@ AbortCode SoloDevice::write(od::ObjectDictionary& dictionary, const od::EntryRef
       }
       break;
     case 0x3014:
-      if (value == 1U && factoryReset_ != nullptr) {
-        factoryReset_(factoryResetContext_);
+      if (value == 1U && factoryReset_ != nullptr && !factoryReset_(factoryResetContext_)) {
+        return AbortCode::kCannotStore;
       }
       break;
     case 0x301F:

@@ -33,8 +33,9 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   /// Runs the drive up to `now`; returns the next step.
   Microseconds process(Microseconds now) noexcept;
 
-  /// Called when 0x3014 asks for factory defaults (the target discards stored parameters).
-  using FactoryResetHandler = void (*)(void* context) noexcept;
+  /// Called when 0x3014 asks for factory defaults (the target discards stored parameters);
+  /// false when that failed: the write answers 0x08000020.
+  using FactoryResetHandler = bool (*)(void* context) noexcept;
   void onFactoryReset(FactoryResetHandler handler, void* context) noexcept {
     factoryReset_ = handler;
     factoryResetContext_ = context;

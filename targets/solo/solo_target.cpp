@@ -27,12 +27,15 @@ SoloTarget::SoloTarget(CanTransmitter& can, const DeviceConfig& config) noexcept
   device_.onFactoryReset(&SoloTarget::discardStoredParameters, this);
 }
 
-void SoloTarget::discardStoredParameters(void* target) noexcept {
+bool SoloTarget::discardStoredParameters(void* target) noexcept {
   ParameterStore* store = static_cast<SoloTarget*>(target)->node_.parameterStore();
-  if (store != nullptr) {
-    store->invalidate(od::kGroupCommunication);
-    store->invalidate(od::kGroupApplication);
+  if (store == nullptr) {
+    return true;
   }
+  // Both groups are tried, so that a failure of one does not keep the other.
+  const StoreResult communication = store->invalidate(od::kGroupCommunication);
+  const StoreResult application = store->invalidate(od::kGroupApplication);
+  return communication == StoreResult::kOk && application == StoreResult::kOk;
 }
 
 Microseconds SoloTarget::process(Microseconds now) noexcept {

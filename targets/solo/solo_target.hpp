@@ -64,7 +64,7 @@ class SoloTarget {
   /// The settings for `config`, with the SOLO's own memory when it is given no storage.
   static NodeSettings settingsFor(const DeviceConfig& config, NvStorage* eeprom) noexcept;
 
-  static void discardStoredParameters(void* target) noexcept;
+  static bool discardStoredParameters(void* target) noexcept;
 
   port::MemoryStorageOf<kStorageBytes> eeprom_;
   Dictionary node_;

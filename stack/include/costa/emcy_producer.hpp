@@ -1,5 +1,11 @@
 // EMCY producer (CiA 301 7.2.7): error conditions, the error register 0x1001, the pre-defined
 // error field 0x1003, the EMCY COB-ID 0x1014 and inhibit time 0x1015.
+//
+// Context: the one that runs the node, never an interrupt; not reentrant (an interrupt that
+// detects an error sets a flag the main loop turns into raise()). No allocation: conditions
+// and the queue of frames waiting for their inhibit time live in caller-owned storage
+// (NodeMemory). Nothing blocks and nothing is lost silently: a full condition table still sends
+// the EMCY (counted: conditionsFull()), a full queue drops the frame (counted: lost()).
 #pragma once
 
 #include <stddef.h>
@@ -54,18 +60,20 @@ class EmcyProducer : public ObjectHook {
   void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
 
   /// Reset communication: pending frames are dropped; active conditions stay (they describe
-  /// the device) and the error register is rewritten.
+  /// the device) and the error register is rewritten. O(conditions).
   void onResetCommunication() noexcept;
 
   /// Raises a condition and queues its EMCY (once: raising an active condition does nothing).
   /// `manufacturer` (5 bytes, may be null) fills the manufacturer-specific field. Returns false
   /// when the condition was already active or the table is full (the EMCY is still sent).
+  /// O(conditions + 0x1003 entries).
   bool raise(uint16_t code, uint8_t source, uint8_t registerBits,
              const uint8_t* manufacturer = nullptr) noexcept;
   /// Clears a condition; when it was the last one, queues the error-reset EMCY (code 0x0000).
-  /// Returns false when the condition was not active.
+  /// Returns false when the condition was not active. O(conditions).
   bool clear(uint16_t code, uint8_t source) noexcept;
   /// An error event without a lasting condition: one EMCY, recorded in 0x1003.
+  /// O(0x1003 entries).
   void signal(uint16_t code, uint8_t registerBits, const uint8_t* manufacturer = nullptr) noexcept;
 
   bool active(uint16_t code, uint8_t source) const noexcept;
@@ -78,8 +86,10 @@ class EmcyProducer : public ObjectHook {
   uint32_t conditionsFull() const noexcept { return conditionsFull_; }
 
   /// Sends queued EMCY frames when `state` allows (pre-operational, operational) and the
-  /// inhibit time (0x1015) has passed since the previous one.
+  /// inhibit time (0x1015) has passed since the previous one. O(frames sent).
   void process(Microseconds now, NmtState state, TransmitPath& tx) noexcept;
+  /// When process() has something to send in `state`: now-or-earlier, the end of the inhibit
+  /// time, or kNever (nothing queued, or a state without EMCY). O(1).
   Microseconds nextDeadline(NmtState state) const noexcept;
 
   /// 0x1003 (writing 0 to sub-index 0 clears the history; any other write aborts 0x06090030),

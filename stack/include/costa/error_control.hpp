@@ -56,7 +56,7 @@ class ErrorControl {
   /// A frame on 0x701..0x77F: a node guarding request for this node (answered when node
   /// guarding is compiled in and the profile has it), or another node's heartbeat. False when
   /// the frame is for no service here.
-  bool onFrame(const CanFrame& frame, uint8_t nodeId) noexcept;
+  [[nodiscard]] bool onFrame(const CanFrame& frame, uint8_t nodeId) noexcept;
 
   /// Life guarding expiry and heartbeat timeouts that are due: EMCY 0x8130 (profile), the
   /// listeners, then the communication error behaviour.

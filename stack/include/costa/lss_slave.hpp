@@ -165,7 +165,7 @@ class LssSlave {
   /// * switch state global (byte 1: 0 = waiting, 1 = configuration): no response. Leaving
   ///   configuration for waiting with active node-id 0xFF and a valid pending node-id calls
   ///   LssSlaveHost::requestResetCommunication().
-  bool onFrame(const CanFrame& frame, Microseconds now) noexcept;
+  [[nodiscard]] bool onFrame(const CanFrame& frame, Microseconds now) noexcept;
 
   /// Runs the bit timing switch when due: calls LssSlaveHost::activateBitTiming() after the
   /// first switch delay and ends the transmit suspension after the second (both in one call

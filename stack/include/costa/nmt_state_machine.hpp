@@ -86,7 +86,7 @@ class NmtStateMachine {
 
   /// An NMT command (a frame on 0x000). True when the frame is a well-formed command for this
   /// node (or all nodes), even when it changes nothing.
-  bool onCommand(const CanFrame& frame) noexcept;
+  [[nodiscard]] bool onCommand(const CanFrame& frame) noexcept;
 
   /// Changes the state with its exit and entry actions. Never into or out of initialising
   /// (only the resets go through it); a change to the current state does nothing.

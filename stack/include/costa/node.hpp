@@ -135,7 +135,7 @@ class Node {
   }
   /// An application event for the TPDO whose communication parameter is at `index`. False when
   /// there is none. O(TPDOs).
-  bool requestTpdo(uint16_t communicationIndex) noexcept {
+  [[nodiscard]] bool requestTpdo(uint16_t communicationIndex) noexcept {
     return pdos_.requestTransmission(communicationIndex);
   }
   /// Raises a device error: EMCY with `code`, `registerBits` (ErrorRegisterBit) and up to 5

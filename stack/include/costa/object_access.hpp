@@ -15,10 +15,13 @@ namespace costa {
 /// Told of every successful remote write (SDO or RPDO), after the hook has run.
 class WriteObserver {
  public:
-  /// `changed` is false when the entry held the same bytes before.
-  virtual void onWritten(const od::EntryRef& ref, bool changed) noexcept {
+  /// `changed` is false when the entry held the same bytes before. A code other than kNone
+  /// reports that what the observer does with the value failed (a save on write: 0x08000020);
+  /// the value stays written and the remote write answers with that code.
+  virtual AbortCode onWritten(const od::EntryRef& ref, bool changed) noexcept {
     (void)ref;
     (void)changed;
+    return AbortCode::kNone;
   }
 
  protected:

@@ -55,7 +55,7 @@ class ParameterStore {
   /// not in the dictionary, such as the LSS node-id and bit timing). Call before layOut(): a
   /// reservation undoes the layout. False when `recordId` is already reserved or kMaxRecords
   /// are.
-  bool reserveRecord(uint8_t recordId, size_t maxLength) noexcept;
+  [[nodiscard]] bool reserveRecord(uint8_t recordId, size_t maxLength) noexcept;
 
   /// Bytes of storage the regions need: groups by ascending number, then records by ascending
   /// id, two slots each. SIZE_MAX when there would be more than kMaxRegions regions, or offsets
@@ -63,40 +63,41 @@ class ParameterStore {
   size_t requiredSize() const noexcept;
   /// Places the regions. False (and nothing usable) when the storage is smaller than
   /// requiredSize(). Reads and writes nothing.
-  bool layOut() noexcept;
+  [[nodiscard]] bool layOut() noexcept;
   bool isLaidOut() const noexcept { return laidOut_; }
 
   /// True when some entry of the dictionary belongs to `group` (never for od::kGroupNone).
   bool hasGroup(uint8_t group) const noexcept;
 
   /// Stores the group's current values as the newest image.
-  StoreResult save(uint8_t group) noexcept;
+  [[nodiscard]] StoreResult save(uint8_t group) noexcept;
   /// Copies the newest intact image of the group into the dictionary. Anything but kOk leaves
   /// the group's values as they were, except when the medium fails or changes during the copy
   /// (kMediumError, kCorrupt): then the group's defaults are restored rather than leave a mix.
-  StoreResult load(uint8_t group) noexcept;
+  [[nodiscard]] StoreResult load(uint8_t group) noexcept;
   /// Saves every group of `groups` (bit g for group g, see groupBit()) that the store holds,
   /// one after the other by ascending number, each on its own: a power loss in the middle
   /// leaves each group entirely old or entirely new (docs/storage.md, "Save all"). Stops at
   /// the first failure and returns it; kUnknownGroup when none of the groups is held.
-  StoreResult saveGroups(uint32_t groups) noexcept;
+  [[nodiscard]] StoreResult saveGroups(uint32_t groups) noexcept;
   /// invalidate() for every group of `groups` the store holds, in the same order and manner.
-  StoreResult invalidateGroups(uint32_t groups) noexcept;
+  [[nodiscard]] StoreResult invalidateGroups(uint32_t groups) noexcept;
 
   /// Stores a "restore defaults" marker as the newest image: the next load() yields kNoImage
   /// and leaves the defaults (CiA 301 0x1011: takes effect at the next reset). The dictionary
   /// is not changed.
-  StoreResult invalidate(uint8_t group) noexcept;
+  [[nodiscard]] StoreResult invalidate(uint8_t group) noexcept;
 
   /// Stores `length` bytes (at most the reserved length) as the newest image of the record.
-  StoreResult saveRecord(uint8_t recordId, const uint8_t* data, size_t length) noexcept;
+  [[nodiscard]] StoreResult saveRecord(uint8_t recordId, const uint8_t* data,
+                                       size_t length) noexcept;
   /// Copies the newest intact image of the record into `buffer` and sets `*length` (0 unless
   /// kOk). On anything but kOk the buffer is left as it was, except after a kMediumError or
   /// kCorrupt found while copying.
-  StoreResult loadRecord(uint8_t recordId, uint8_t* buffer, size_t capacity,
-                         size_t* length) noexcept;
+  [[nodiscard]] StoreResult loadRecord(uint8_t recordId, uint8_t* buffer, size_t capacity,
+                                       size_t* length) noexcept;
   /// Stores a "no data" marker: the next loadRecord() yields kNoImage.
-  StoreResult invalidateRecord(uint8_t recordId) noexcept;
+  [[nodiscard]] StoreResult invalidateRecord(uint8_t recordId) noexcept;
 
  private:
   struct Region {

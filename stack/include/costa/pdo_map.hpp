@@ -50,20 +50,19 @@ class PdoMap {
     count_ = 0;
     bytes_ = 0;
     accessMask_ = 0;
-    skipMask_ = 0;
-    romMask_ = 0;
+    markMask_ = 0;
   }
   size_t bytes() const noexcept { return bytes_; }
   size_t count() const noexcept { return count_; }
   /// True when every entry is copied as it is (no hook, no check, no dummy).
-  bool plain() const noexcept { return (accessMask_ | skipMask_) == 0U; }
-  /// True when the sub-index `ref` locates is mapped.
+  bool plain() const noexcept { return (accessMask_ | markMask_) == 0U; }
+  /// True when the sub-index `ref` locates is mapped (asked of TPDO maps: markChanged()).
   bool contains(const od::EntryRef& ref) const noexcept;
 
   /// Copies the mapped values into `out` (bytes() bytes), all in one call, so a frame never
   /// mixes two writes of an entry.
   void pack(const ObjectAccess& access, uint8_t* out) const noexcept {
-    if ((accessMask_ | romMask_) != 0U) {
+    if ((accessMask_ | markMask_) != 0U) {
       packThroughAccess(access, out);
       return;
     }
@@ -115,16 +114,20 @@ class PdoMap {
     uint8_t length;
   };
   bool needsAccess(size_t slot) const noexcept { return (accessMask_ & (1U << slot)) != 0U; }
-  bool skipped(size_t slot) const noexcept { return (skipMask_ & (1U << slot)) != 0U; }
-  bool inRom(size_t slot) const noexcept { return (romMask_ & (1U << slot)) != 0U; }
+  /// In an RPDO: slot `slot` is a dummy entry.
+  bool skipped(size_t slot) const noexcept { return (markMask_ & (1U << slot)) != 0U; }
+  /// In a TPDO: slot `slot` is copied from the constants block.
+  bool inRom(size_t slot) const noexcept { return (markMask_ & (1U << slot)) != 0U; }
   od::EntryRef locate(const ObjectAccess& access, size_t slot) const noexcept;
 
   Slot slots_[kMaxEntries] = {};
   uint8_t count_ = 0;
   uint8_t bytes_ = 0;
   uint8_t accessMask_ = 0;  ///< bit i: slot i goes through ObjectAccess
-  uint8_t skipMask_ = 0;    ///< bit i: slot i is a dummy entry (RPDO)
-  uint8_t romMask_ = 0;     ///< bit i: slot i is copied from the constants block (TPDO)
+  /// Bit i: in an RPDO, slot i is a dummy entry (skipped()); in a TPDO, slot i is a constant
+  /// (inRom()). A map has one direction (RPDOs map no constants, TPDOs no dummy entries), so
+  /// one byte serves both and the map stays 36 bytes.
+  uint8_t markMask_ = 0;
 };
 
 }  // namespace costa

@@ -38,7 +38,7 @@ class SdoServer {
   /// ignored, as CiA 301 requires (returns false for them), except requests of at least
   /// SdoProfile::shortestRequest bytes, whose missing bytes count as 0. O(log n) in the
   /// dictionary size plus the hook's cost.
-  bool onRequest(const CanFrame& frame, Microseconds now) noexcept;
+  [[nodiscard]] bool onRequest(const CanFrame& frame, Microseconds now) noexcept;
 
   /// Aborts a transfer that has been silent longer than the timeout (0x05040000); queues
   /// further segments of a block upload sub-block as the transmit queue has room.

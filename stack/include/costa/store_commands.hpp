@@ -34,7 +34,8 @@ class StoreCommands : public ObjectHook {
   /// Reaction to a restore of every group (0x1011 sub-index 1) beyond the groups themselves.
   class RestoreAllListener {
    public:
-    virtual void onRestoreAll() noexcept {}
+    /// False when it failed: the restore answers 0x08000020 (the groups are restored already).
+    virtual bool onRestoreAll() noexcept { return true; }
 
    protected:
     RestoreAllListener() = default;

@@ -70,8 +70,8 @@ class StoredParameters final : private StoreCommands::RestoreAllListener, privat
   WriteObserver* autoSave() noexcept;
 
  private:
-  void onRestoreAll() noexcept override;
-  void onWritten(const od::EntryRef& ref, bool changed) noexcept override;
+  bool onRestoreAll() noexcept override;
+  AbortCode onWritten(const od::EntryRef& ref, bool changed) noexcept override;
   void remember(uint8_t group, StoreResult result) noexcept;
 
   class NoStorage final : public NvStorage {};

@@ -44,10 +44,10 @@ class SyncService : public ObjectHook {
   }
   /// A received SYNC. A length that does not match 0x1019 (DLC 0 without a counter, 1 with)
   /// raises EMCY 0x8240 and the SYNC is ignored; returns false then.
-  bool onFrame(const CanFrame& frame, Microseconds now, SyncEvent* event) noexcept;
+  [[nodiscard]] bool onFrame(const CanFrame& frame, Microseconds now, SyncEvent* event) noexcept;
 
   /// Producer: sends the SYNC when due. Returns true (and fills `event`) when it sent one.
-  bool process(Microseconds now, bool allowed, SyncEvent* event) noexcept;
+  [[nodiscard]] bool process(Microseconds now, bool allowed, SyncEvent* event) noexcept;
   Microseconds nextDeadline() const noexcept { return producer_ ? timer_.next() : kNever; }
 
   bool producer() const noexcept { return producer_; }
