@@ -173,6 +173,7 @@ TEST(PowerOnBitRate, WithoutAStoredBitTimingThePortKeepsTheRateItWasStartedWith)
 
 /// Rates of a device's own bit timing table (selector 128): 25 kbit/s, and a rate beside it.
 constexpr uint32_t kOwnRates[] = {25000, 33333};
+constexpr BitRateTable kOwnTable{kOwnRates, 2};
 
 /// An example node whose pending bit timing is `pending` when reset communication runs, with a
 /// recording bit rate control and, when `ownTable`, kOwnRates as its table 128.
@@ -182,7 +183,7 @@ class OwnBitTimingTable : public ::testing::Test {
     NodeSettings settings;
     settings.bitRateControl = &rate_;
     if (ownTable) {
-      settings.manufacturerBitRates = BitRateTable{kOwnRates, 2};
+      settings.manufacturerBitRates = &kOwnTable;
     }
     bus_ = std::make_unique<InProcessBus>(exampleWith(settings));
     bus_->node().setPendingBitTiming(pending);

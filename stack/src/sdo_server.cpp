@@ -127,11 +127,20 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
   if (expedited) {
     const size_t length = sizeIndicated ? 4U - ((request[0] >> 2U) & 0x03U)
                                         : unspecifiedExpeditedLength(ref_, request + 4);
-    downloadExpedited(request, length);
+    const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
+    if (written != AbortCode::kNone) {
+      finishExpedited(request, written);
+      return;
+    }
+    CanFrame response;
+    channel_.address(response);
+    copyBytes(response.data, request, 4);  // the multiplexer as asked
+    response.data[0] = kScsInitiateDownloadResponse;
+    channel_.send(response);
     return;
   }
   if (!sizeIndicated && (request[0] & 0x0CU) != 0U && profile_.expeditedByCountAlone) {
-    downloadExpedited(request, 4U - ((request[0] >> 2U) & 0x03U));
+    downloadByCountAlone(request);
     return;
   }
   const AbortCode begun =
@@ -147,29 +156,23 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
   respond(response);
 }
 
-COSTA_HOT_INLINE void SdoServer::downloadExpedited(const uint8_t* request, size_t length) noexcept {
-  AbortCode written = writer_.writeWhole(ref_, request + 4, length);
-  if (written != AbortCode::kNone) {
-    written = retryWithLowBytes(written, request + 4, length);
-    if (written != AbortCode::kNone) {
-      sendAbort(index_, subIndex_, written);
-      return;
-    }
-  }
-  CanFrame response;
-  channel_.address(response);
-  copyBytes(response.data, request, 4);  // the multiplexer as asked
-  response.data[0] = kScsInitiateDownloadResponse;
-  channel_.send(response);
+void SdoServer::downloadByCountAlone(const uint8_t* request) noexcept {
+  finishExpedited(request,
+                  writer_.writeWhole(ref_, request + 4, 4U - ((request[0] >> 2U) & 0x03U)));
 }
 
-AbortCode SdoServer::retryWithLowBytes(AbortCode refusal, const uint8_t* data,
-                                       size_t length) noexcept {
-  if (refusal != AbortCode::kLengthTooHigh || !profile_.expeditedKeepsLowBytes ||
-      !od::isNumeric(ref_.type()) || length <= ref_.size()) {
-    return refusal;
+void SdoServer::finishExpedited(const uint8_t* request, AbortCode verdict) noexcept {
+  if (verdict == AbortCode::kLengthTooHigh && profile_.expeditedKeepsLowBytes &&
+      od::isNumeric(ref_.type())) {
+    // More bytes than the number has: little-endian, its low bytes come first.
+    verdict = writer_.writeWhole(ref_, request + 4, ref_.size());
   }
-  return writer_.writeWhole(ref_, data, ref_.size());  // little-endian: the low bytes first
+  if (verdict != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, verdict);
+    return;
+  }
+  const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
+  respond(response);
 }
 
 COSTA_HOT_INLINE void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcept {

@@ -14,6 +14,7 @@ inline constexpr uint8_t kHighestNodeId = 126;
 inline constexpr uint32_t kBitRates[] = {1000000, 800000, 500000, 250000,
                                          125000,  50000,  25000,  10000};
 inline constexpr uint8_t kBitRateCount = sizeof(kBitRates) / sizeof(kBitRates[0]);
+inline constexpr BitRateTable kBitRateTable{kBitRates, kBitRateCount};
 /// 250 kbit/s, the default (lines 60, 88, 125).
 inline constexpr LssBitTiming kDefaultBitTiming{kManufacturerBitTimingTable, 3};
 

@@ -38,7 +38,7 @@ class SantengTarget {
     s.nodeId = 1;
     s.profile = profile();
     s.bitTiming = kDefaultBitTiming;
-    s.manufacturerBitRates = BitRateTable{kBitRates, kBitRateCount};
+    s.manufacturerBitRates = &kBitRateTable;
     s.automaticStart = true;
     s.storeAllGroups = kSavedGroups;
     s.restoreAllGroups = kSavedGroups;

@@ -6,17 +6,18 @@
 #pragma once
 
 #include "costa/lss_bit_timing.hpp"
+#include "costa/node_settings.hpp"
 #include "costa/port/can_bit_rate.hpp"
 
 namespace costa {
 
 class BitTimingSwitch {
  public:
-  /// `control` may be null: the node then only records the timing in use. `table`: the
-  /// device's own bit timing table (selector 128), or none.
-  BitTimingSwitch(CanBitRateControl* control, LssBitTiming initial,
-                  BitRateTable table = {}) noexcept
-      : control_(control), table_(table), inUse_(initial), pending_(initial) {}
+  /// Starts at `settings.bitTiming`; re-times `settings.bitRateControl` (when null, the node
+  /// only records the timing in use) with the rates of CiA 305's table and of
+  /// `settings.manufacturerBitRates`. `settings` outlives the switch.
+  explicit BitTimingSwitch(const NodeSettings& settings) noexcept
+      : settings_(settings), inUse_(settings.bitTiming), pending_(settings.bitTiming) {}
 
   /// The timing in use: with a controller to re-time, the one it last accepted.
   LssBitTiming inUse() const noexcept { return inUse_; }
@@ -28,9 +29,9 @@ class BitTimingSwitch {
   /// accepted. A timing without a bit rate (CiA 305's or the device's own table's), or one the
   /// controller refuses, leaves the timing in use as it was.
   void switchTo(LssBitTiming timing) noexcept {
-    if (control_ != nullptr) {
-      const uint32_t rate = bitRateOf(timing, table_);
-      if (rate == 0U || !control_->setBitRate(rate)) {
+    if (settings_.bitRateControl != nullptr) {
+      const uint32_t rate = bitRateOf(timing, settings_.manufacturerBitRates);
+      if (rate == 0U || !settings_.bitRateControl->setBitRate(rate)) {
         return;
       }
     }
@@ -46,8 +47,7 @@ class BitTimingSwitch {
   }
 
  private:
-  CanBitRateControl* control_;
-  BitRateTable table_;
+  const NodeSettings& settings_;
   LssBitTiming inUse_;
   LssBitTiming pending_;
 };

@@ -29,7 +29,7 @@ inline bool operator!=(const LssBitTiming& a, const LssBitTiming& b) noexcept {
 inline constexpr uint8_t kManufacturerBitTimingTable = 128;
 
 /// A device's own bit timing table (NodeSettings::manufacturerBitRates): the rate in bit/s of
-/// each index of table selector kManufacturerBitTimingTable. Empty: the device has none.
+/// each index of table selector kManufacturerBitTimingTable.
 struct BitRateTable {
   const uint32_t* bitsPerSecond = nullptr;
   uint8_t count = 0;
@@ -38,12 +38,13 @@ struct BitRateTable {
 /// Bit rate of `timing` in bit/s: its CiA 305 table rate, or its rate in the device's own
 /// `table` (selector 128); 0 when it has none (automatic bit rate detection, a reserved entry,
 /// another manufacturer-specific table, an index beyond the device's table).
-constexpr uint32_t bitRateOf(LssBitTiming timing, BitRateTable table = {}) noexcept {
+constexpr uint32_t bitRateOf(LssBitTiming timing, const BitRateTable* table = nullptr) noexcept {
   if (timing.tableSelector == 0U) {
     return cia305BitRate(timing.tableIndex);
   }
-  return timing.tableSelector == kManufacturerBitTimingTable && timing.tableIndex < table.count
-             ? table.bitsPerSecond[timing.tableIndex]
+  return table != nullptr && timing.tableSelector == kManufacturerBitTimingTable &&
+                 timing.tableIndex < table->count
+             ? table->bitsPerSecond[timing.tableIndex]
              : 0U;
 }
 

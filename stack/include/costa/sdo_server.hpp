@@ -79,11 +79,13 @@ class SdoServer {
   /// allows its length (SdoProfile::shortestRequest), else ignored (false).
   [[gnu::noinline]] bool onShortRequest(const CanFrame& frame, Microseconds now) noexcept;
   COSTA_HOT_INLINE void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
-  /// Writes the `length` bytes of an expedited download and answers it.
-  COSTA_HOT_INLINE void downloadExpedited(const uint8_t* request, size_t length) noexcept;
-  /// After a refused expedited download: SdoProfile::expeditedKeepsLowBytes writes the
-  /// object's low bytes of a longer number. Returns the refusal, or the second write's result.
-  AbortCode retryWithLowBytes(AbortCode refusal, const uint8_t* data, size_t length) noexcept;
+  /// A byte count without e and s: an expedited download of that count, for a device that
+  /// reads the count alone (SdoProfile::expeditedByCountAlone).
+  [[gnu::noinline]] void downloadByCountAlone(const uint8_t* request) noexcept;
+  /// An expedited download off the usual path, given the write's `verdict`: a number refused
+  /// as too long is written again as its low bytes (SdoProfile::expeditedKeepsLowBytes); then
+  /// the response or the abort.
+  void finishExpedited(const uint8_t* request, AbortCode verdict) noexcept;
   void downloadSegment(const uint8_t* request, Microseconds now) noexcept;
   COSTA_HOT_INLINE void initiateUpload(const uint8_t* request, Microseconds now) noexcept;
   void answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept;
