@@ -211,6 +211,7 @@ COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcep
   channel_.send(response);
 }
 
+// NOLINTNEXTLINE(misc-no-recursion): calls onRequest() once with 8 bytes, which never come back
 bool SdoServer::onShortRequest(const CanFrame& frame, Microseconds now) noexcept {
   const uint8_t shortest = profile_.shortestRequest == 0U ? 1U : profile_.shortestRequest;
   if (frame.rtr || frame.dlc >= 8U || frame.dlc < shortest) {
@@ -222,12 +223,13 @@ bool SdoServer::onShortRequest(const CanFrame& frame, Microseconds now) noexcept
   return onRequest(whole, now);
 }
 
+// NOLINTNEXTLINE(misc-no-recursion): onShortRequest() calls back once, with 8 bytes
 bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
   if (frame.dlc != 8U || frame.rtr) {
     return onShortRequest(frame, now);
   }
-  lastCall_ = now;
   const uint8_t* request = frame.data;
+  lastCall_ = now;
   const auto ccs = static_cast<uint8_t>(request[0] >> 5U);
   // The frequent requests first: the next segment of an upload, a new expedited transfer.
   if (state_ == State::kUploadSegments && ccs == kCcsUploadSegment) {

@@ -44,13 +44,15 @@ std::string FrameTracer::describeSdoRequest(const CanFrame& frame, bool local) {
     return "SDO request (malformed, ignored)";
   }
   if (frame.dlc < 8U) {
-    CanFrame whole = frame;
-    std::fill(whole.data + frame.dlc, whole.data + 8, uint8_t{0});
-    whole.dlc = 8;
-    return describeSdoRequest(whole, local) + " (" + std::to_string(frame.dlc) +
+    uint8_t whole[8] = {};
+    std::copy(frame.data, frame.data + frame.dlc, whole);
+    return describeSdoRequestData(whole, local) + " (" + std::to_string(frame.dlc) +
            " bytes, the rest taken as 0)";
   }
-  const uint8_t* d = frame.data;
+  return describeSdoRequestData(frame.data, local);
+}
+
+std::string FrameTracer::describeSdoRequestData(const uint8_t* d, bool local) {
   if (block_ == Block::kDownloadSegments && d[0] != 0x80U) {
     return describeBlockSegment(d);
   }

@@ -126,10 +126,25 @@ bool numberInto(Reader& reader, uint32_t smallest, uint32_t largest, SantengCont
   return true;
 }
 
+/// The channel settings of "set ..." (`what`): the usage line when wrong, else null.
+const char* parseChannelSetting(const Word& what, Reader& reader, SantengControl* control) {
+  using Kind = SantengControl::Kind;
+  if (what.is("mode")) {
+    control->kind = Kind::kMode;
+    return parseMode(reader, control) ? nullptr : "usage: set mode 1|2 open-loop|speed|position";
+  }
+  control->kind = what.is("max-rpm") ? Kind::kMaxRpm : Kind::kEncoderLines;
+  const bool valid = reader.channel(&control->channel) && numberInto(reader, 1, 65535, control);
+  return valid ? nullptr : "usage: set max-rpm|encoder-lines 1|2 1..65535";
+}
+
 /// "set ...": the usage line when it is wrong, else null.
 const char* parseSetting(Reader& reader, SantengControl* control) {
   using Kind = SantengControl::Kind;
   const Word what = reader.word();
+  if (what.is("mode") || what.is("max-rpm") || what.is("encoder-lines")) {
+    return parseChannelSetting(what, reader, control);
+  }
   if (what.is("node-id")) {
     control->kind = Kind::kNodeId;
     return numberInto(reader, 1, 126, control) ? nullptr : "usage: set node-id 1..126";
@@ -148,15 +163,6 @@ const char* parseSetting(Reader& reader, SantengControl* control) {
   if (what.is("auto-start")) {
     control->kind = Kind::kAutoStart;
     return reader.state(&control->on) ? nullptr : "usage: set auto-start on|off";
-  }
-  if (what.is("mode")) {
-    control->kind = Kind::kMode;
-    return parseMode(reader, control) ? nullptr : "usage: set mode 1|2 open-loop|speed|position";
-  }
-  if (what.is("max-rpm") || what.is("encoder-lines")) {
-    control->kind = what.is("max-rpm") ? Kind::kMaxRpm : Kind::kEncoderLines;
-    const bool valid = reader.channel(&control->channel) && numberInto(reader, 1, 65535, control);
-    return valid ? nullptr : "usage: set max-rpm|encoder-lines 1|2 1..65535";
   }
   return "usage: set node-id|bit-rate|heartbeat|tpdo-rate|auto-start|mode|max-rpm|"
          "encoder-lines ...";

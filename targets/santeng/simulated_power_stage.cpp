@@ -67,7 +67,7 @@ void SimulatedPowerStage::setStalled(size_t channel, bool stalled) noexcept {
 }
 
 void SimulatedPowerStage::setInput(unsigned number, bool high) noexcept {
-  const uint32_t bit = 1UL << (number - 1U);
+  const uint32_t bit = uint32_t{1} << (number - 1U);
   inputs_ = high ? inputs_ | bit : inputs_ & ~bit;
 }
 

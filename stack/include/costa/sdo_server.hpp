@@ -75,8 +75,9 @@ class SdoServer {
   void armTimeout(Microseconds now) noexcept;
   /// A request while no transfer runs: starts one, or aborts.
   void initiate(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
-  /// A request shorter than 8 bytes, or an RTR frame: served as 8 bytes when the profile
-  /// allows its length (SdoProfile::shortestRequest), else ignored (false).
+  /// A request shorter than 8 bytes, or an RTR frame: served as 8 bytes, the missing ones 0,
+  /// when the profile serves its length (SdoProfile::shortestRequest: onRequest() once more,
+  /// with 8 bytes), else ignored (false).
   [[gnu::noinline]] bool onShortRequest(const CanFrame& frame, Microseconds now) noexcept;
   COSTA_HOT_INLINE void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
   /// A byte count without e and s: an expedited download of that count, for a device that
