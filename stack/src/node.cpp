@@ -20,7 +20,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       sync_(dictionary_, tx_, emcy_, clock_, router_),
       pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
       stored_(dictionary_, settings_, listeners_),
-      bitTiming_(settings_),
+      bitTiming_(settings_.bitRateControl, settings_.bitTiming),
       router_(memory.routes, memory.routeCapacity),
       errorControl_(dictionary_, settings_.profile.errorControl, tx_, emcy_, clock_, listeners_,
                     nmt_, memory.heartbeatMonitors, memory.heartbeatMonitorCapacity),

@@ -6,18 +6,15 @@
 #pragma once
 
 #include "costa/lss_bit_timing.hpp"
-#include "costa/node_settings.hpp"
 #include "costa/port/can_bit_rate.hpp"
 
 namespace costa {
 
 class BitTimingSwitch {
  public:
-  /// Starts at `settings.bitTiming`; re-times `settings.bitRateControl` (when null, the node
-  /// only records the timing in use) with the rates of CiA 305's table and of
-  /// `settings.manufacturerBitRates`. `settings` outlives the switch.
-  explicit BitTimingSwitch(const NodeSettings& settings) noexcept
-      : settings_(settings), inUse_(settings.bitTiming), pending_(settings.bitTiming) {}
+  /// `control` may be null: the node then only records the timing in use.
+  BitTimingSwitch(CanBitRateControl* control, LssBitTiming initial) noexcept
+      : control_(control), inUse_(initial), pending_(initial) {}
 
   /// The timing in use: with a controller to re-time, the one it last accepted.
   LssBitTiming inUse() const noexcept { return inUse_; }
@@ -26,12 +23,14 @@ class BitTimingSwitch {
   void setPending(LssBitTiming timing) noexcept { pending_ = timing; }
 
   /// Re-times the controller (when there is one) and makes `timing` the one in use if it
-  /// accepted. A timing without a bit rate (CiA 305's or the device's own table's), or one the
-  /// controller refuses, leaves the timing in use as it was.
-  void switchTo(LssBitTiming timing) noexcept {
-    if (settings_.bitRateControl != nullptr) {
-      const uint32_t rate = bitRateOf(timing, settings_.manufacturerBitRates);
-      if (rate == 0U || !settings_.bitRateControl->setBitRate(rate)) {
+  /// accepted. A timing without a bit rate (in CiA 305's table, or in `table`, the device's own:
+  /// NodeSettings::manufacturerBitRates), or one the controller refuses, leaves the timing in
+  /// use as it was. Out of line: its callers (LSS, reset communication) share one copy.
+  [[gnu::noinline]] void switchTo(LssBitTiming timing,
+                                  const BitRateTable* table = nullptr) noexcept {
+    if (control_ != nullptr) {
+      const uint32_t rate = bitRateOf(timing, table);
+      if (rate == 0U || !control_->setBitRate(rate)) {
         return;
       }
     }
@@ -40,14 +39,14 @@ class BitTimingSwitch {
 
   /// Reset communication: switches to the pending timing when it differs from the one in use
   /// (a refused switch is tried again at the next reset communication).
-  void applyPending() noexcept {
+  void applyPending(const BitRateTable* table = nullptr) noexcept {
     if (pending_ != inUse_) {
-      switchTo(pending_);
+      switchTo(pending_, table);
     }
   }
 
  private:
-  const NodeSettings& settings_;
+  CanBitRateControl* control_;
   LssBitTiming inUse_;
   LssBitTiming pending_;
 };
