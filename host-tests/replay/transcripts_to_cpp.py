@@ -159,6 +159,8 @@ def parse_transcript(content, path, devices):
             can_id = stream_integer(rest, 64, signed=False, base=16)
             if can_id is None or can_id > 0x7FF:
                 fail("ignore needs an 11-bit CAN-ID in hex")
+            if len(rest.split()) > 1:
+                fail("ignore takes one CAN-ID (one line each)")
             transcript["ignored"].append(can_id)
             continue
         else:

@@ -79,6 +79,10 @@ bool parseTranscript(const std::string& text, const std::string& path, Transcrip
       if (!(idText >> std::hex >> id) || id > 0x7FF) {
         return fail("ignore needs an 11-bit CAN-ID in hex");
       }
+      std::string more;
+      if (idText >> more) {
+        return fail("ignore takes one CAN-ID (one line each)");
+      }
       transcript->ignored.push_back(static_cast<uint32_t>(id));
       continue;
     } else {

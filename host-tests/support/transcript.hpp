@@ -13,9 +13,10 @@
 //                           over SocketCAN, timing is not asserted)
 //   sim raw 12288 12288     a command to the device's simulation (its composition's control();
 //                           over SocketCAN through costa-slave --control)
-//   ignore 1FF              frames on this CAN-ID that no `tx` step is waiting for are skipped,
-//                           by `silence` and the end check too (periodic frames the transcript
-//                           does not follow): a transcript cannot show that such a frame is absent
+//   ignore 1FF              frames on this CAN-ID (one per line) that no `tx` step is waiting
+//                           for are skipped, by `silence` and the end check too (periodic
+//                           frames the transcript does not follow): a transcript cannot show
+//                           that such a frame is absent
 //
 // Every frame the slave sends must be matched by a `tx` line, in order.
 #pragma once

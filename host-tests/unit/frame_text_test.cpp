@@ -82,6 +82,8 @@ TEST(Transcript, ParsesStepsAndReportsErrorsWithLines) {
   test::Transcript noDevice;
   EXPECT_FALSE(test::parseTranscript("rx 601 [0]\n", "t", &noDevice, &error));
   EXPECT_FALSE(test::parseTranscript("device x\nnode-id 200\n", "t", &bad, &error));
+  EXPECT_FALSE(test::parseTranscript("device x\nignore 181 281\n", "t", &bad, &error));
+  EXPECT_EQ(error, "t:2: ignore takes one CAN-ID (one line each)");
 }
 
 }  // namespace

@@ -56,6 +56,7 @@ class ParseErrors(unittest.TestCase):
             ("ignore -1", "t.transcript:2: ignore needs an 11-bit CAN-ID in hex"),
             ("ignore 0x", "t.transcript:2: ignore needs an 11-bit CAN-ID in hex"),
             ("ignore g", "t.transcript:2: ignore needs an 11-bit CAN-ID in hex"),
+            ("ignore 181 281", "t.transcript:2: ignore takes one CAN-ID (one line each)"),
             ("transmit 701 [1] 00", "t.transcript:2: unknown keyword 'transmit'"),
         ]
         for line, message in cases:
