@@ -38,6 +38,13 @@ void PdoEngine::bind() noexcept {
       tpdos_[tpdoCount_++].bind(index);
     }
   }
+  if (context_.profile.tpdoAnswersRpdo) {
+    constexpr uint16_t kAnswerOffset = kTpdoCommunicationFirst - kRpdoCommunicationFirst;
+    for (size_t i = 0; i < rpdoCount_; ++i) {
+      rpdos_[i].answerWith(
+          findTpdo(static_cast<uint16_t>(rpdos_[i].communicationIndex() + kAnswerOffset)));
+    }
+  }
 }
 
 void PdoEngine::configure() noexcept {

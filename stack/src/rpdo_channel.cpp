@@ -4,6 +4,7 @@
 #include "costa/node_clock.hpp"
 #include "costa/node_events.hpp"
 #include "costa/od/bytes.hpp"
+#include "costa/tpdo_channel.hpp"
 
 namespace costa {
 
@@ -34,7 +35,22 @@ bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
 }
 
 void RpdoChannel::updateQuietDlc() noexcept {
-  quietDlc_ = tooShort_ || tooLong_ ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+  quietDlc_ =
+      tooShort_ || tooLong_ || answer_ != nullptr ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+}
+
+bool RpdoChannel::onOtherFrame(PdoContext& context, const CanFrame& frame,
+                               Microseconds now) noexcept {
+  if (frame.dlc != map_.bytes() || tooShort_ || tooLong_) {
+    if (!checkLength(context, frame.dlc)) {
+      return true;  // too short: not accepted, not answered
+    }
+  }
+  const bool accepted = accept(context, frame, now);
+  if (accepted && answer_ != nullptr) {
+    answer_->signalEvent(context.clock);
+  }
+  return accepted;
 }
 
 void RpdoChannel::stop() noexcept {

@@ -21,6 +21,8 @@
 
 namespace costa {
 
+class TpdoChannel;
+
 class RpdoChannel {
  public:
   static constexpr uint16_t kEmcyLengthShort = 0x8210;  ///< PDO not processed: too few bytes
@@ -28,6 +30,9 @@ class RpdoChannel {
   static constexpr uint16_t kEmcyTimeout = 0x8250;      ///< RPDO deadline (event timer) missed
 
   void bind(uint16_t communicationIndex) noexcept { index_ = communicationIndex; }
+  /// The TPDO that answers each PDO this channel accepts (PdoProfile::tpdoAnswersRpdo), or
+  /// null. Set once, before configure().
+  void answerWith(TpdoChannel* tpdo) noexcept { answer_ = tpdo; }
   uint16_t communicationIndex() const noexcept { return index_; }
 
   /// Reads the communication parameters and resolves the mapping; drops held data. False when
@@ -52,20 +57,10 @@ class RpdoChannel {
   /// at once. False when an entry was refused (nothing written).
   COSTA_HOT_INLINE bool onFrame(PdoContext& context, const CanFrame& frame,
                                 Microseconds now) noexcept {
-    if (frame.dlc != quietDlc_ && !checkLength(context, frame.dlc)) {
-      return true;
+    if (frame.dlc != quietDlc_) {
+      return onOtherFrame(context, frame, now);
     }
-    if (eventTimerMs_ != 0U) {
-      restartDeadline(context, now);
-    }
-    if (type_ >= 254U) {
-      return apply(context, frame.data);
-    }
-    if (type_ <= 240U) {
-      copyBytes(held_, frame.data, sizeof(held_));
-      holding_ = true;
-    }
-    return true;
+    return accept(context, frame, now);
   }
   /// Applies the data held since the previous SYNC. False when an entry was refused.
   bool onSync(PdoContext& context) noexcept;
@@ -78,6 +73,24 @@ class RpdoChannel {
   void stop() noexcept;
 
  private:
+  /// A frame of the right length: applied (254/255) or held for the SYNC (0..240).
+  COSTA_HOT_INLINE bool accept(PdoContext& context, const CanFrame& frame,
+                               Microseconds now) noexcept {
+    if (eventTimerMs_ != 0U) {
+      restartDeadline(context, now);
+    }
+    if (type_ >= 254U) {
+      return apply(context, frame.data);
+    }
+    if (type_ <= 240U) {
+      copyBytes(held_, frame.data, sizeof(held_));
+      holding_ = true;
+    }
+    return true;
+  }
+  /// A frame the quiet path does not take (out of line): a length that raises or clears EMCY
+  /// 0x8210/0x8220, or any frame of a PDO that an answering TPDO follows.
+  bool onOtherFrame(PdoContext& context, const CanFrame& frame, Microseconds now) noexcept;
   /// Writes `data` into the mapped entries, with the listeners' notifications around it.
   COSTA_HOT_INLINE bool apply(PdoContext& context, const uint8_t* data) noexcept {
     if (!map_.plain()) {
@@ -111,10 +124,11 @@ class RpdoChannel {
   bool valid_ = false;
   bool holding_ = false;
   bool timedOut_ = false;
-  bool tooShort_ = false;  ///< EMCY 0x8210 raised
-  bool tooLong_ = false;   ///< EMCY 0x8220 raised
-  /// The DLC for which checkLength() has nothing to do: the mapped bytes while neither length
-  /// EMCY is raised, else none (0xFF).
+  bool tooShort_ = false;          ///< EMCY 0x8210 raised
+  bool tooLong_ = false;           ///< EMCY 0x8220 raised
+  TpdoChannel* answer_ = nullptr;  ///< answers every accepted PDO (PdoProfile::tpdoAnswersRpdo)
+  /// The DLC for which onFrame() takes the quiet path: the mapped bytes while neither length
+  /// EMCY is raised and no TPDO answers, else none (0xFF).
   uint8_t quietDlc_ = 0;
   Microseconds deadline_ = kNever;
   PdoMap map_;
