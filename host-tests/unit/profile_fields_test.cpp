@@ -24,7 +24,7 @@ NodeSettings withAnsweringTpdos() {
   return settings;
 }
 
-// --- EmcyProfile::sendFrames ------------------------------------------------------------------
+// --- EmcyProfile::sendFrames
 
 TEST_F(ExampleNodeTest, Cia301AnErrorSendsItsEmcy) {
   withNode([](Node& node) { node.raiseError(0x3210, kErrorVoltage); });
@@ -67,7 +67,7 @@ TEST_F(WithoutEmcyFrames, CommunicationErrorsSendNothingEither) {
   )");
 }
 
-// --- ErrorControlProfile::heartbeatWhileError -----------------------------------------------------
+// --- ErrorControlProfile::heartbeatWhileError
 
 TEST_F(ExampleNodeTest, Cia301TheHeartbeatShowsTheStateWhileAnErrorIsActive) {
   withNode([](Node& node) { node.raiseError(0x3210, kErrorVoltage); });
@@ -109,7 +109,7 @@ TEST_F(AlarmHeartbeat, TheHeartbeatCarries04WhileAnErrorIsActiveAndTheStateStays
   )");
 }
 
-// --- PdoProfile::tpdoAnswersRpdo ---------------------------------------------------------------
+// --- PdoProfile::tpdoAnswersRpdo
 
 TEST_F(ExampleNodeTest, Cia301AnRpdoIsNotAnswered) {
   EXPECT_TRANSCRIPT(R"(
