@@ -20,6 +20,7 @@
 
 #include "example_target.hpp"
 #include "gefran_target.hpp"
+#include "mseries_target.hpp"
 #include "solo_target.hpp"
 
 // NOLINTBEGIN(cppcoreguidelines-macro-usage,bugprone-macro-parentheses): an X-macro, the one
@@ -29,7 +30,8 @@
   X(example, ::costa::example::ExampleTarget) \
   X(solo, ::costa::solo::SoloTarget)          \
   X(gra, ::costa::gefran::GraTarget)          \
-  X(grn, ::costa::gefran::GrnTarget)
+  X(grn, ::costa::gefran::GrnTarget)          \
+  X(mseries, ::costa::mseries::MSeriesTarget)
 
 namespace costa::devices {
 

@@ -91,6 +91,10 @@ TEST_F(DriveTest, ModesSwitchAndShowInTheDisplay) {
     tx 581 [8] 80 60 60 00 30 00 09 06
     rx 601 [8] 40 61 60 00 00 00 00 00
     tx 581 [8] 4F 61 60 00 03 00 00 00   # unchanged
+    rx 601 [8] 2F 60 60 00 00 00 00 00   # 0: no mode change
+    tx 581 [8] 60 60 60 00 00 00 00 00
+    rx 601 [8] 40 61 60 00 00 00 00 00
+    tx 581 [8] 4F 61 60 00 03 00 00 00
   )"),
             "");
   EXPECT_EQ(bus_.drive().mode(), cia402::kProfileVelocity);

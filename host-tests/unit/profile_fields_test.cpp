@@ -1,7 +1,9 @@
 // Profile fields of a device without EMCY, with an alarm in its heartbeat, without 0x1029 and with
 // TPDOs that answer its RPDOs (the M-series joint's wire, docs/errata-m-series.md W6-W10): each
 // through exact frames, beside the example device's unchanged CiA 301 answer.
+#include "dictionary_node_bus.hpp"
 #include "example_fixture.hpp"
+#include "mseries_od.hpp"
 
 namespace costa::test {
 namespace {
@@ -107,6 +109,69 @@ TEST_F(AlarmHeartbeat, TheHeartbeatCarries04WhileAnErrorIsActiveAndTheStateStays
     wait 100
     tx 701 [1] 05
   )");
+}
+
+// --- ErrorControlProfile::errorBehaviourWithoutObject
+
+using JointDictionaryBus = DictionaryNodeBus<gen::mseries::Values, gen::mseries::Capacity>;
+
+// The M-series dictionary has no 0x1029; its 0x1016:01 monitors node 0x7F with 2000 ms and its
+// 0x1017 is 1000 ms. A node with it and the stack's defaults (CiA 301) goes pre-operational on a
+// heartbeat timeout.
+TEST(ErrorBehaviourWithoutObject, Cia301DefaultEntersPreOperational) {
+  JointDictionaryBus bus(gen::mseries::kDefinition, NodeSettings{});
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    rx 000 [2] 01 01
+    rx 77F [1] 05
+    wait 1000
+    tx 701 [1] 05
+    wait 1000
+    tx 701 [1] 05
+    tx 081 [8] 30 81 11 7F 00 00 00 00   # heartbeat error, producer 0x7F
+    wait 1000
+    tx 701 [1] 7F                        # pre-operational
+  )",
+                     bus),
+            "");
+}
+
+TEST(ErrorBehaviourWithoutObject, OneKeepsTheState) {
+  NodeSettings settings;
+  settings.profile.errorControl.errorBehaviourWithoutObject = 1;
+  JointDictionaryBus bus(gen::mseries::kDefinition, settings);
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    rx 000 [2] 01 01
+    rx 77F [1] 05
+    wait 2000
+    tx 701 [1] 05
+    tx 701 [1] 05
+    tx 081 [8] 30 81 11 7F 00 00 00 00
+    wait 1000
+    tx 701 [1] 05                        # still operational
+  )",
+                     bus),
+            "");
+}
+
+TEST(ErrorBehaviourWithoutObject, TheObjectWinsOverTheField) {
+  NodeSettings settings;
+  settings.profile.errorControl.errorBehaviourWithoutObject = 1;
+  InProcessBus bus(exampleWith(settings));
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5, 100 ms
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 000 [2] 01 01
+    rx 705 [1] 05
+    wait 100
+    tx 081 [8] 30 81 11 05 00 00 00 00
+    rx 701 [0] RTR                       # 0x1029:01 = 0: pre-operational
+    tx 701 [1] 7F
+  )",
+                     bus),
+            "");
 }
 
 // --- PdoProfile::tpdoAnswersRpdo

@@ -32,7 +32,7 @@ class FrameTracer {
  private:
   std::string describeNmt(const CanFrame& frame) const;
   std::string describeEmcy(const CanFrame& frame, bool local) const;
-  std::string describeErrorControl(const CanFrame& frame);
+  std::string describeErrorControl(const CanFrame& frame, bool local);
   std::string describeSdoRequest(const CanFrame& frame, bool local);
   std::string describeSdoResponse(const CanFrame& frame, bool local);
   std::string describeBlockRequest(const uint8_t* data, const std::string& entry);

@@ -28,7 +28,8 @@ AbortCode Drive::check(od::ObjectDictionary& dictionary, const od::EntryRef& ref
   if (checked != AbortCode::kNone || ref.index() != object::kModes) {
     return checked;
   }
-  return supported(static_cast<int8_t>(data[0])) ? AbortCode::kNone : AbortCode::kInvalidValue;
+  const auto mode = static_cast<int8_t>(data[0]);
+  return mode == kNoMode || supported(mode) ? AbortCode::kNone : AbortCode::kInvalidValue;
 }
 
 AbortCode Drive::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
@@ -147,8 +148,8 @@ void Drive::evaluate() noexcept {
   AxisState axis = axis_.state();
   runStateMachine(controlword, &axis);
   const auto requested = static_cast<int8_t>(read(object::kModes, 0, kNoMode));
-  if (requested != mode_ && (requested == kNoMode || supported(requested))) {
-    changeMode(requested);
+  if (requested != mode_ && requested != kNoMode && supported(requested)) {
+    changeMode(requested);  // 0: no mode change (CiA 402)
   }
   complete(axis);
   controlword = takeEvents(controlword, axis);

@@ -171,52 +171,46 @@ AxisCommand Drive::motion(uint16_t controlword) const noexcept {
 }
 
 uint16_t Drive::modeStatus(uint16_t controlword, const AxisState& axis) const noexcept {
-  const bool halted =
-      state_ == PowerState::kOperationEnabled && (hold_ || (controlword & control::kHalt) != 0U);
-  uint16_t reached = axis.atRest ? status::kTargetReached : 0U;
+  const bool enabled = state_ == PowerState::kOperationEnabled;
+  const bool halted = enabled && (hold_ || (controlword & control::kHalt) != 0U);
+  // Bit 10: at rest, unless the mode has a target of its own that is not reached yet.
+  bool reached = axis.atRest;
   uint16_t bits = 0;
-  const auto target = static_cast<int32_t>(read(object::kTargetVelocity, 0, 0));
   switch (mode_) {
     case kProfilePosition:
-      if (!halted && moving_) {
-        reached = 0;
-      }
-      bits = acknowledged_ ? status::kModeBit12 : 0U;
+      reached = reached && (halted || !moving_);
+      bits = acknowledged_ ? status::kModeBit12 : 0U;  // set-point acknowledge
       break;
     case kProfileVelocity:
-      if (!halted && state_ == PowerState::kOperationEnabled) {
-        reached = axis.velocity == target ? status::kTargetReached : 0U;
+      if (enabled && !halted) {
+        reached = axis.velocity == static_cast<int32_t>(read(object::kTargetVelocity, 0, 0));
       }
-      bits = axis.velocity == 0 ? status::kModeBit12 : 0U;
+      bits = axis.velocity == 0 ? status::kModeBit12 : 0U;  // speed 0
       break;
     case kHoming:
-      if (homingRunning_) {
-        reached = 0;
-      }
-      bits = static_cast<uint16_t>(
-          (homingResult_ == HomingState::kAttained ? status::kModeBit12 : 0U) |
-          (homingResult_ == HomingState::kError ? status::kModeBit13 : 0U));
+      reached = reached && !homingRunning_;
+      bits = homingStatus();
       break;
-    case kInterpolatedPosition: {
-      const bool active =
-          state_ == PowerState::kOperationEnabled &&
-          (options_.ipWithoutEnableBit || (controlword & control::kNewSetPoint) != 0U);
-      if (!halted && ipTaken_ && axis.position != ipTarget_) {
-        reached = 0;
-      }
-      bits = active ? status::kModeBit12 : 0U;
+    case kInterpolatedPosition:
+      reached = reached && (halted || !ipTaken_ || axis.position == ipTarget_);
+      bits = enabled && (options_.ipWithoutEnableBit || (controlword & control::kNewSetPoint) != 0U)
+                 ? status::kModeBit12  // ip mode active
+                 : 0U;
       break;
-    }
-    default:
-      if (homingRunning_) {
-        reached = 0;
-      }
-      break;
+    default: break;
   }
   if ((options_.modeStatusModes & modeBit(mode_)) == 0U) {
     bits = 0;
   }
-  return static_cast<uint16_t>(reached | bits);
+  return static_cast<uint16_t>((reached ? status::kTargetReached : 0U) | bits);
+}
+
+uint16_t Drive::homingStatus() const noexcept {
+  switch (homingResult_) {
+    case HomingState::kAttained: return status::kModeBit12;
+    case HomingState::kError: return status::kModeBit13;
+    default: return 0;
+  }
 }
 
 uint16_t Drive::statusOf(uint16_t controlword, const AxisState& axis) const noexcept {

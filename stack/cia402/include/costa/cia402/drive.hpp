@@ -69,7 +69,7 @@ class Drive : public ObjectHook, public NodeEvents {
   /// The command the axis was given last.
   const AxisCommand& axisCommand() const noexcept { return commanded_; }
 
-  /// 0x6060: a mode 0x6502 does not list aborts 0x06090030.
+  /// 0x6060: a mode 0x6502 does not list aborts 0x06090030; 0 is "no mode change".
   AbortCode check(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
@@ -95,6 +95,8 @@ class Drive : public ObjectHook, public NodeEvents {
   AxisCommand modeMotion() const noexcept;
   uint16_t statusOf(uint16_t controlword, const AxisState& axis) const noexcept;
   uint16_t modeStatus(uint16_t controlword, const AxisState& axis) const noexcept;
+  /// Status bits 12 (attained) and 13 (error) of homing.
+  uint16_t homingStatus() const noexcept;
   bool supported(int8_t mode) const noexcept;
   int64_t read(uint16_t index, uint8_t subIndex, int64_t fallback) const noexcept;
   uint32_t deceleration(uint16_t first) const noexcept;
