@@ -12,6 +12,7 @@
 namespace costa::fuzz {
 namespace {
 
+/// The events of `input`; a simulation event's text points into `input`, which must outlive them.
 std::vector<Event> decode(const std::vector<uint8_t>& input) {
   EventReader reader(input.data(), input.size());
   std::vector<Event> events;
@@ -61,13 +62,14 @@ TEST(FuzzEvents, Frames) {
 }
 
 TEST(FuzzEvents, TimeControllerPowerAndSimulation) {
-  const std::vector<Event> events = decode({
+  const std::vector<uint8_t> input = {
       0x00, 0x40, 200,  0x41, 0xE8, 0x03, 0x42, 3,    0x43, 0x44, 0x45, 0x7F,  // waits
       0x80, 0x81, 0x82, 0x86, 0x87, 0x88, 0x10, 0x00,                          // controller, power
       0x89, 0x09, 'a',  'n',  'g',  'l',  'e',  ' ',  '2',  '7',  '0',         // sim angle 270
       0x8A, 0x8D, 0xBF,                                                        // nothing
       0xC3, 0x40, 0x00, 0x10, 0x00, 0x00, 0x00, 0x00, 0x00,                    // own SDO request
-  });
+  };
+  const std::vector<Event> events = decode(input);
   ASSERT_EQ(events.size(), 18U);
   EXPECT_EQ(events[0].duration, 200U);
   EXPECT_EQ(events[1].duration, 1000000U);

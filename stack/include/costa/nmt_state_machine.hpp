@@ -84,8 +84,9 @@ class NmtStateMachine {
   void resetNode() noexcept;
   void resetCommunication() noexcept;
 
-  /// An NMT command (a frame on 0x000). True when the frame is a well-formed command for this
-  /// node (or all nodes), even when it changes nothing.
+  /// An NMT command (a frame on 0x000): acts on a well-formed command for this node or all
+  /// nodes. Always true: every frame on 0x000 is the NMT's, so one that is malformed or for
+  /// another node changes nothing and is not counted as ignored.
   [[nodiscard]] bool onCommand(const CanFrame& frame) noexcept;
 
   /// Changes the state with its exit and entry actions. Never into or out of initialising
