@@ -1,5 +1,6 @@
 #include "joint_device.hpp"
 
+#include "device_control.hpp"
 #include "mseries_profile.hpp"
 
 namespace costa::mseries {
@@ -120,6 +121,30 @@ Microseconds JointDevice::process(Microseconds now) noexcept {
   drive_.update();
   publish(joint_.read());
   return joint_.moving() ? at(simulated_, kStep) : kNever;
+}
+
+bool JointDevice::consistent(char* why, size_t whySize) const noexcept {
+  using cia402::PowerState;
+  const uint16_t status = values_.x6041_statusword;
+  const PowerState state = drive_.state();
+  if ((status & driveOptions().unusedStatusBits) != 0U) {
+    return refuseControl("the status word sets bit 6, 7, 9 or 11", why, whySize);
+  }
+  if ((status & (cia402::status::kModeBit12 | cia402::status::kModeBit13)) != 0U &&
+      drive_.mode() != cia402::kHoming) {
+    return refuseControl("the status word sets bit 12 or 13 outside homing", why, whySize);
+  }
+  // Bits 0, 1, 2, 3 and 5 code the state (bit 4, voltage, and bit 6, unused, do not).
+  constexpr uint16_t kStateBits = 0x002FU;
+  const bool pulseWord = pulseControl_ && (state == PowerState::kSwitchOnDisabled ||
+                                           state == PowerState::kNotReadyToSwitchOn);
+  const uint16_t expected =
+      pulseWord ? cia402::status::kOperationEnabled
+                : static_cast<uint16_t>(cia402::stateStatusBits(state) & kStateBits);
+  if ((status & kStateBits) != expected) {
+    return refuseControl("the status word does not show the drive's state", why, whySize);
+  }
+  return true;
 }
 
 bool JointDevice::raiseAlarm(uint8_t alarm) noexcept {

@@ -46,6 +46,11 @@ class JointDevice : public ObjectHook, public NodeEvents, public cia402::Axis {
   /// Simulation: the supply voltage; above kOverVoltage raises alarm 0x15.
   void setSupplyVolts(uint32_t volts) noexcept;
 
+  /// The status word shows the drive's state (the fuzzer's invariant): bits 0..5 as the state
+  /// sets them, or the joint's own word under pulse control (B7); never bits 6, 7, 9, 11; bits
+  /// 12, 13 only in homing (B6). Otherwise false, with why in `why` (as snprintf writes).
+  bool consistent(char* why, size_t whySize) const noexcept;
+
   cia402::Drive& drive() noexcept { return drive_; }
   const JointAlarms& alarms() const noexcept { return alarms_; }
   /// Every hook and listener of the joint and its drive found room in the node.

@@ -54,6 +54,11 @@ class MSeriesTarget {
     const Microseconds deviceNext = device_.process(now);
     return earliest(deviceNext, node_.process(now));
   }
+  /// The status word shows a state of the drive (JointDevice::consistent): an invariant the
+  /// fuzzer checks after every event.
+  bool consistent(char* why, size_t whySize) const noexcept {
+    return device_.consistent(why, whySize);
+  }
   /// The simulation commands of joint_control.hpp; each takes effect at once.
   bool control(const char* command, char* why, size_t whySize) noexcept;
 
