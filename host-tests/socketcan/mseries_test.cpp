@@ -4,6 +4,7 @@
 // (5.10.3) with three costa-slave processes, node-ids 1..3, moved by one SYNC.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <stdlib.h>
 
 #include <chrono>
 #include <memory>
@@ -141,6 +142,39 @@ TEST(JointsOnVcan, OneSyncMovesThreeJoints) {
   for (auto& joint : joints) {
     EXPECT_EQ(joint->slave().stop(SIGTERM), 0) << joint->slave().output();
   }
+}
+
+TEST(JointOnVcan, ASavedNodeIdIsTheNextRunsWithStorage) {
+  char directory[] = "/tmp/costa-joint-XXXXXX";
+  const char* made = ::mkdtemp(directory);
+  ASSERT_NE(made, nullptr);
+  const std::string path = std::string(made) + "/joint.nv";
+  {
+    SocketBus bus("m-series", -1, {"--storage", path});
+    ASSERT_EQ(bus.error(), "");
+    EXPECT_EQ(playText(R"(
+      tx 701 [1] 00
+      rx 601 [8] 2B 15 26 00 05 00 00 00   # node-id 5 (line 374)
+      tx 581 [8] 60 15 26 00 00 00 00 00
+      rx 601 [8] 2B 14 26 00 01 00 00 00   # save (line 271)
+      tx 581 [8] 60 14 26 00 00 00 00 00
+      rx 601 [8] 40 14 26 00 00 00 00 00   # reads 2 (line 273)
+      tx 581 [8] 4B 14 26 00 02 00 00 00
+    )",
+                       bus, kSocketReceiveTimeoutMs),
+              "");
+    EXPECT_EQ(bus.slave().stop(SIGTERM), 0);
+  }
+  SocketBus bus("m-series", -1, {"--storage", path});
+  ASSERT_EQ(bus.error(), "");
+  EXPECT_EQ(playText(R"(
+    tx 705 [1] 00                          # the next power-on: node-id 5
+    rx 205 [7] 0F 00 01 00 00 00 00        # RPDO1 and TPDO1 followed it
+    tx 185 [6] 00 00 00 00 37 04
+  )",
+                     bus, kSocketReceiveTimeoutMs),
+            "");
+  EXPECT_EQ(bus.slave().stop(SIGTERM), 0);
 }
 
 TEST(JointCommandLine, ListDevicesShowsThePublicName) {

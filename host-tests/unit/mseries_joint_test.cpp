@@ -48,6 +48,32 @@ TEST_F(JointFunctions, OtherNumeratorWritesAreJustNumerators) {
   )");
 }
 
+TEST_F(JointFunctions, NoInternalRampFrom60000On) {
+  // Lines 195-203: below 60000 (r/min)/s the joint ramps, from 60000 on it does not (D17).
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 83 60 00 5F EA 00 00   # 59999
+    tx 581 [8] 60 83 60 00 00 00 00 00
+    rx 601 [8] 23 FF 60 00 E8 03 00 00   # 1000 r/min
+    tx 581 [8] 60 FF 60 00 00 00 00 00
+    rx 601 [8] 2F 60 60 00 03 00 00 00
+    tx 581 [8] 60 60 60 00 00 00 00 00
+    rx 601 [8] 2B 40 60 00 0F 00 00 00
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    wait 1
+    rx 601 [8] 40 6C 60 00 00 00 00 00   # 1 ms at 59999 (r/min)/s: 60 r/min
+    tx 581 [8] 43 6C 60 00 3C 00 00 00
+    rx 601 [8] 2B 40 60 00 06 00 00 00   # stop (shutdown)
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    rx 601 [8] 23 83 60 00 60 EA 00 00   # 60000
+    tx 581 [8] 60 83 60 00 00 00 00 00
+    rx 601 [8] 2B 40 60 00 0F 00 00 00
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    wait 1
+    rx 601 [8] 40 6C 60 00 00 00 00 00   # at once: 1000 r/min
+    tx 581 [8] 43 6C 60 00 E8 03 00 00
+  )");
+}
+
 TEST_F(JointFunctions, AlarmAcknowledgeBy0x260E) {
   EXPECT_TRANSCRIPT(R"(
     sim alarm 0x12

@@ -39,18 +39,10 @@ void RpdoChannel::updateQuietDlc() noexcept {
       tooShort_ || tooLong_ || answer_ != nullptr ? 0xFFU : static_cast<uint8_t>(map_.bytes());
 }
 
-bool RpdoChannel::onOtherFrame(PdoContext& context, const CanFrame& frame,
-                               Microseconds now) noexcept {
-  if (frame.dlc != map_.bytes() || tooShort_ || tooLong_) {
-    if (!checkLength(context, frame.dlc)) {
-      return true;  // too short: not accepted, not answered
-    }
+void RpdoChannel::withdrawAnswer() noexcept {
+  if (answer_ != nullptr) {
+    answer_->withdrawEvent();
   }
-  const bool accepted = accept(context, frame, now);
-  if (accepted && answer_ != nullptr) {
-    answer_->signalEvent(context.clock);
-  }
-  return accepted;
 }
 
 void RpdoChannel::stop() noexcept {
@@ -79,6 +71,9 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
     context.emcy.clear(kEmcyLengthLong, source());
   }
   updateQuietDlc();
+  if (answer_ != nullptr) {
+    answer_->signalEvent(context.clock);  // taken: answered (withdrawn if an entry refuses)
+  }
   return true;
 }
 

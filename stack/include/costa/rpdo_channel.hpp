@@ -57,25 +57,9 @@ class RpdoChannel {
   /// at once. False when an entry was refused (nothing written).
   COSTA_HOT_INLINE bool onFrame(PdoContext& context, const CanFrame& frame,
                                 Microseconds now) noexcept {
-    if (frame.dlc != quietDlc_) {
-      return onOtherFrame(context, frame, now);
+    if (frame.dlc != quietDlc_ && !checkLength(context, frame.dlc)) {
+      return true;
     }
-    return accept(context, frame, now);
-  }
-  /// Applies the data held since the previous SYNC. False when an entry was refused.
-  bool onSync(PdoContext& context) noexcept;
-  bool holding() const noexcept { return holding_; }
-  /// Deadline monitoring with the event timer (sub-index 5): EMCY 0x8250 when no PDO arrived
-  /// within it after the first one.
-  void process(PdoContext& context, Microseconds now) noexcept;
-  Microseconds nextDeadline() const noexcept { return timedOut_ ? kNever : deadline_; }
-  /// Leaving operational: held data and monitoring stop.
-  void stop() noexcept;
-
- private:
-  /// A frame of the right length: applied (254/255) or held for the SYNC (0..240).
-  COSTA_HOT_INLINE bool accept(PdoContext& context, const CanFrame& frame,
-                               Microseconds now) noexcept {
     if (eventTimerMs_ != 0U) {
       restartDeadline(context, now);
     }
@@ -88,9 +72,20 @@ class RpdoChannel {
     }
     return true;
   }
-  /// A frame the quiet path does not take (out of line): a length that raises or clears EMCY
-  /// 0x8210/0x8220, or any frame of a PDO that an answering TPDO follows.
-  bool onOtherFrame(PdoContext& context, const CanFrame& frame, Microseconds now) noexcept;
+  /// An answer signalled for a PDO that an entry then refused is taken back (the refusal is
+  /// rare and cold; the answer is signalled before the entries are written, see checkLength()).
+  void withdrawAnswer() noexcept;
+  /// Applies the data held since the previous SYNC. False when an entry was refused.
+  bool onSync(PdoContext& context) noexcept;
+  bool holding() const noexcept { return holding_; }
+  /// Deadline monitoring with the event timer (sub-index 5): EMCY 0x8250 when no PDO arrived
+  /// within it after the first one.
+  void process(PdoContext& context, Microseconds now) noexcept;
+  Microseconds nextDeadline() const noexcept { return timedOut_ ? kNever : deadline_; }
+  /// Leaving operational: held data and monitoring stop.
+  void stop() noexcept;
+
+ private:
   /// Writes `data` into the mapped entries, with the listeners' notifications around it.
   COSTA_HOT_INLINE bool apply(PdoContext& context, const uint8_t* data) noexcept {
     if (!map_.plain()) {
@@ -113,7 +108,8 @@ class RpdoChannel {
   void restartDeadline(PdoContext& context, Microseconds now) noexcept;
   void updateQuietDlc() noexcept;
   /// Raises or clears EMCY 0x8210/0x8220 for a frame of `dlc` bytes; looks nothing up while
-  /// the length stays right. False for a frame too short to apply.
+  /// the length stays right. False for a frame too short to apply. A frame that will be taken
+  /// signals the answering TPDO (all frames come here when there is one: quietDlc_).
   bool checkLength(PdoContext& context, uint8_t dlc) noexcept;
   uint8_t source() const noexcept { return static_cast<uint8_t>(index_ & 0xFFU); }
 
