@@ -38,11 +38,16 @@ void PdoEngine::bind() noexcept {
       tpdos_[tpdoCount_++].bind(index);
     }
   }
+  context_.tpdos = tpdos_;
   if (context_.profile.tpdoAnswersRpdo) {
     constexpr uint16_t kAnswerOffset = kTpdoCommunicationFirst - kRpdoCommunicationFirst;
     for (size_t i = 0; i < rpdoCount_; ++i) {
-      rpdos_[i].answerWith(
-          findTpdo(static_cast<uint16_t>(rpdos_[i].communicationIndex() + kAnswerOffset)));
+      const auto answer = static_cast<uint16_t>(rpdos_[i].communicationIndex() + kAnswerOffset);
+      for (size_t t = 0; t < tpdoCount_; ++t) {
+        if (tpdos_[t].communicationIndex() == answer) {
+          rpdos_[i].answerWith(t);
+        }
+      }
     }
   }
 }
@@ -158,6 +163,11 @@ bool PdoEngine::requestTransmission(uint16_t communicationIndex) noexcept {
   }
   tpdo->signalEvent(context_.clock);
   return true;
+}
+
+void PdoEngine::refused(RpdoChannel& rpdo) noexcept {
+  ++rpdosRefused_;
+  rpdo.withdrawAnswer(context_);
 }
 
 RpdoChannel* PdoEngine::findRpdo(uint16_t communicationIndex) noexcept {

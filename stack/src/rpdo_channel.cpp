@@ -35,13 +35,12 @@ bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
 }
 
 void RpdoChannel::updateQuietDlc() noexcept {
-  quietDlc_ =
-      tooShort_ || tooLong_ || answer_ != nullptr ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+  quietDlc_ = tooShort_ || tooLong_ || answer_ != 0U ? 0xFFU : static_cast<uint8_t>(map_.bytes());
 }
 
-void RpdoChannel::withdrawAnswer() noexcept {
-  if (answer_ != nullptr) {
-    answer_->withdrawEvent();
+void RpdoChannel::withdrawAnswer(PdoContext& context) const noexcept {
+  if (answer_ != 0U) {
+    context.tpdos[answer_ - 1U].withdrawEvent();
   }
 }
 
@@ -71,8 +70,9 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
     context.emcy.clear(kEmcyLengthLong, source());
   }
   updateQuietDlc();
-  if (answer_ != nullptr) {
-    answer_->signalEvent(context.clock);  // taken: answered (withdrawn if an entry refuses)
+  if (answer_ != 0U) {
+    // Taken: answered (withdrawn if an entry refuses).
+    context.tpdos[answer_ - 1U].signalEvent(context.clock);
   }
   return true;
 }

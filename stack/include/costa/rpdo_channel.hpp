@@ -21,8 +21,6 @@
 
 namespace costa {
 
-class TpdoChannel;
-
 class RpdoChannel {
  public:
   static constexpr uint16_t kEmcyLengthShort = 0x8210;  ///< PDO not processed: too few bytes
@@ -30,9 +28,9 @@ class RpdoChannel {
   static constexpr uint16_t kEmcyTimeout = 0x8250;      ///< RPDO deadline (event timer) missed
 
   void bind(uint16_t communicationIndex) noexcept { index_ = communicationIndex; }
-  /// The TPDO that answers each PDO this channel accepts (PdoProfile::tpdoAnswersRpdo), or
-  /// null. Set once, before configure().
-  void answerWith(TpdoChannel* tpdo) noexcept { answer_ = tpdo; }
+  /// The TPDO (its channel in PdoContext::tpdos) that answers each PDO this channel accepts
+  /// (PdoProfile::tpdoAnswersRpdo). Set once, before configure().
+  void answerWith(size_t tpdoChannel) noexcept { answer_ = static_cast<uint8_t>(tpdoChannel + 1U); }
   uint16_t communicationIndex() const noexcept { return index_; }
 
   /// Reads the communication parameters and resolves the mapping; drops held data. False when
@@ -74,7 +72,7 @@ class RpdoChannel {
   }
   /// An answer signalled for a PDO that an entry then refused is taken back (the refusal is
   /// rare and cold; the answer is signalled before the entries are written, see checkLength()).
-  void withdrawAnswer() noexcept;
+  void withdrawAnswer(PdoContext& context) const noexcept;
   /// Applies the data held since the previous SYNC. False when an entry was refused.
   bool onSync(PdoContext& context) noexcept;
   bool holding() const noexcept { return holding_; }
@@ -120,12 +118,14 @@ class RpdoChannel {
   bool valid_ = false;
   bool holding_ = false;
   bool timedOut_ = false;
-  bool tooShort_ = false;          ///< EMCY 0x8210 raised
-  bool tooLong_ = false;           ///< EMCY 0x8220 raised
-  TpdoChannel* answer_ = nullptr;  ///< answers every accepted PDO (PdoProfile::tpdoAnswersRpdo)
+  bool tooShort_ = false;  ///< EMCY 0x8210 raised
+  bool tooLong_ = false;   ///< EMCY 0x8220 raised
   /// The DLC for which onFrame() takes the quiet path: the mapped bytes while neither length
   /// EMCY is raised and no TPDO answers, else none (0xFF).
   uint8_t quietDlc_ = 0;
+  /// The TPDO that answers every PDO taken (PdoProfile::tpdoAnswersRpdo): its channel in
+  /// PdoContext::tpdos plus 1, or 0 for none (a byte, so that the channel keeps its size).
+  uint8_t answer_ = 0;
   Microseconds deadline_ = kNever;
   PdoMap map_;
   uint8_t held_[PdoMap::kMaxBytes] = {};
