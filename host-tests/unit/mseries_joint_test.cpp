@@ -74,6 +74,36 @@ TEST_F(JointFunctions, NoInternalRampFrom60000On) {
   )");
 }
 
+// The positions the transcripts of 5.07.1 and 5.09 leave open (they also run in real time over
+// SocketCAN), here on the virtual clock.
+TEST_F(JointFunctions, WhereTheSpeedExampleStops) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 60 60 00 03 00 00 00
+    tx 581 [8] 60 60 60 00 00 00 00 00
+    rx 601 [8] 23 FF 60 00 E8 03 00 00
+    tx 581 [8] 60 FF 60 00 00 00 00 00
+    rx 601 [8] 2B 40 60 00 0F 00 00 00
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    wait 100
+    rx 601 [8] 2B 40 60 00 0F 01 00 00   # halt after 100 ms
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    wait 100
+    rx 601 [8] 40 64 60 00 00 00 00 00   # 50 ms of ramp and 50 ms at 1000 r/min:
+    tx 581 [8] 43 64 60 00 11 A1 00 00   # 13926 + 27307 = 41233 counts
+  )");
+}
+
+TEST_F(JointFunctions, WhereTheHomingExampleIsAfter100Ms) {
+  EXPECT_TRANSCRIPT(R"(
+    sim position 10000
+    rx 601 [8] 2F 60 60 00 06 00 00 00   # method 17: down at 100 r/min
+    tx 581 [8] 60 60 60 00 00 00 00 00
+    wait 100
+    rx 601 [8] 40 64 60 00 00 00 00 00   # 10000 - 100 x 54.6 counts
+    tx 581 [8] 43 64 60 00 BA 11 00 00
+  )");
+}
+
 TEST_F(JointFunctions, AlarmAcknowledgeBy0x260E) {
   EXPECT_TRANSCRIPT(R"(
     sim alarm 0x12

@@ -46,9 +46,12 @@ class MSeriesTarget {
   MSeriesTarget(CanTransmitter& can, const DeviceConfig& config) noexcept;
 
   void start(Microseconds now) noexcept;
+  /// A read or an RPDO's answer sees the motor as it is at `now`: the motor runs up to `now`
+  /// first, and the answering TPDO leaves before it runs on (errata W8: at reception).
   void onFrame(const CanFrame& frame, Microseconds now) noexcept {
-    device_.process(now);  // a read or an RPDO answer sees the motor as it is now
+    device_.process(now);
     node_.onFrame(frame, now);
+    static_cast<void>(node_.process(now));
   }
   Microseconds process(Microseconds now) noexcept {
     const Microseconds deviceNext = device_.process(now);

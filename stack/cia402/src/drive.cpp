@@ -159,8 +159,8 @@ void Drive::evaluate() noexcept {
     homingRestart_ = false;
     axis_.command(next);
     axis = axis_.state();
-    complete(axis);
   }
+  complete(axis);  // a set-point already reached ends at once
   lastControlword_ = controlword;
   const uint16_t status = statusOf(controlword, axis);
   dictionary.storeUnsigned(object::kModesDisplay, 0, static_cast<uint64_t>(mode_));
