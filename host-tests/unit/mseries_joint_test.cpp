@@ -104,6 +104,26 @@ TEST_F(JointFunctions, WhereTheHomingExampleIsAfter100Ms) {
   )");
 }
 
+// Found by fuzzing (host-tests/fuzz/regressions/mseries/negative-target-position): negative
+// positions are fixed-point products, never shifts of a negative number.
+TEST_F(JointFunctions, NegativePositionsAreReachedExactly) {
+  EXPECT_TRANSCRIPT(R"(
+    sim position -20000
+    rx 201 [7] 2F 00 01 B0 3C FF FF      # 0x2F, mode 1, target -50000
+    tx 181 [6] E0 B1 FF FF 37 00
+    wait 200
+    rx 201 [7] 2F 00 01 B0 3C FF FF
+    tx 181 [6] B0 3C FF FF 37 04         # -50000, reached
+    wait 1                               # the inhibit time (0.3 ms)
+    rx 201 [7] 2F 00 01 46 C3 00 C8      # -939474106: far away, at 1000 r/min
+    tx 181 [6] B0 3C FF FF 37 00
+    wait 800
+    tx 701 [1] 05                        # the heartbeat at 1000 ms
+    rx 601 [8] 40 6C 60 00 00 00 00 00
+    tx 581 [8] 43 6C 60 00 18 FC FF FF   # -1000 r/min
+  )");
+}
+
 TEST_F(JointFunctions, AlarmAcknowledgeBy0x260E) {
   EXPECT_TRANSCRIPT(R"(
     sim alarm 0x12

@@ -7,6 +7,12 @@ using cia402::HomingState;
 using cia402::Motion;
 
 constexpr unsigned kFraction = 16;  ///< position and velocity carry 16 fractional bits
+constexpr int64_t kOneCount = int64_t{1} << kFraction;
+
+/// A count in the fixed point of position_ (a product: a negative count may not be shifted).
+constexpr int64_t fixed(int32_t counts) noexcept {
+  return int64_t{counts} * kOneCount;
+}
 /// (counts << 16) per ms of one r/min: 32768 * 65536 / 60000.
 constexpr int64_t kRpmScale = int64_t{1} << 31;
 constexpr int64_t kRpmDivisor = 60000;
@@ -64,7 +70,7 @@ void SimulatedJoint::drive(const JointCommand& command) noexcept {
     homingEnded();  // an active input, or a method without a search, ends it at once
   }
   if (command.axis.motion == Motion::kInterpolate) {
-    const int64_t distance = magnitude((int64_t{command.axis.position} << kFraction) - position_);
+    const int64_t distance = magnitude(fixed(command.axis.position) - position_);
     const int64_t steps = command.axis.period / kStep == 0U ? 1 : command.axis.period / kStep;
     ipSpeed_ = (distance + steps - 1) / steps;
     const int64_t limit = fromRpm(command.axis.velocity);
@@ -79,7 +85,7 @@ void SimulatedJoint::drive(const JointCommand& command) noexcept {
 }
 
 void SimulatedJoint::setPosition(int32_t position) noexcept {
-  position_ = int64_t{position} << kFraction;
+  position_ = fixed(position);
 }
 
 void SimulatedJoint::step(Microseconds elapsed) noexcept {
@@ -104,13 +110,11 @@ void SimulatedJoint::stepOnce() noexcept {
       position_ += velocity_;
       break;
     }
-    case Motion::kPosition:
-      stepPosition(int64_t{c.position} << kFraction, fromRpm(c.velocity));
-      break;
+    case Motion::kPosition: stepPosition(fixed(c.position), fromRpm(c.velocity)); break;
     case Motion::kVelocity: stepVelocity(fromRpm(c.velocity)); break;
     case Motion::kHoming: stepHoming(); break;
     case Motion::kInterpolate: {
-      const int64_t target = int64_t{c.position} << kFraction;
+      const int64_t target = fixed(c.position);
       const int64_t distance = target - position_;
       if (magnitude(distance) <= ipSpeed_) {
         position_ = target;
@@ -227,8 +231,8 @@ bool SimulatedJoint::moving() const noexcept {
   const cia402::AxisCommand& c = command_.axis;
   switch (c.motion) {
     case Motion::kPosition:  // a move at velocity 0 cannot go on: at rest where it is
-      return position_ != int64_t{c.position} << kFraction && c.velocity != 0;
-    case Motion::kInterpolate: return position_ != int64_t{c.position} << kFraction;
+      return position_ != fixed(c.position) && c.velocity != 0;
+    case Motion::kInterpolate: return position_ != fixed(c.position);
     case Motion::kVelocity: return c.velocity != 0;
     case Motion::kHoming: return homing_ == HomingState::kRunning;
     default: return false;
