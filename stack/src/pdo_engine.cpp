@@ -165,7 +165,7 @@ bool PdoEngine::requestTransmission(uint16_t communicationIndex) noexcept {
   return true;
 }
 
-void PdoEngine::refused(RpdoChannel& rpdo) noexcept {
+void PdoEngine::refused(const RpdoChannel& rpdo) noexcept {
   ++rpdosRefused_;
   rpdo.withdrawAnswer(context_);
 }

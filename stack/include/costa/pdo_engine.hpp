@@ -100,7 +100,7 @@ class PdoEngine : public ObjectHook {
 
  private:
   /// An RPDO an entry refused: counted, its answer taken back (out of the receive path).
-  [[gnu::cold, gnu::noinline]] void refused(RpdoChannel& rpdo) noexcept;
+  [[gnu::cold, gnu::noinline]] void refused(const RpdoChannel& rpdo) noexcept;
   RpdoChannel* findRpdo(uint16_t communicationIndex) noexcept;
   TpdoChannel* findTpdo(uint16_t communicationIndex) noexcept;
   /// write() for a parameter of `channel` (an RpdoChannel or a TpdoChannel).
