@@ -165,11 +165,6 @@ bool PdoEngine::requestTransmission(uint16_t communicationIndex) noexcept {
   return true;
 }
 
-void PdoEngine::refused(const RpdoChannel& rpdo) noexcept {
-  ++rpdosRefused_;
-  rpdo.withdrawAnswer(context_);
-}
-
 RpdoChannel* PdoEngine::findRpdo(uint16_t communicationIndex) noexcept {
   for (size_t i = 0; i < rpdoCount_; ++i) {
     if (rpdos_[i].communicationIndex() == communicationIndex) {

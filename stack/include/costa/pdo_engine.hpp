@@ -56,7 +56,8 @@ class PdoEngine : public ObjectHook {
       return false;
     }
     if (!rpdo.onFrame(context_, frame, now)) {
-      refused(rpdo);
+      ++rpdosRefused_;
+      rpdo.withdrawAnswer(context_);
     }
     holding_ = holding_ || rpdo.holding();
     return true;
@@ -99,8 +100,6 @@ class PdoEngine : public ObjectHook {
                   size_t length) noexcept override;
 
  private:
-  /// An RPDO an entry refused: counted, its answer taken back (out of the receive path).
-  [[gnu::cold, gnu::noinline]] void refused(const RpdoChannel& rpdo) noexcept;
   RpdoChannel* findRpdo(uint16_t communicationIndex) noexcept;
   TpdoChannel* findTpdo(uint16_t communicationIndex) noexcept;
   /// write() for a parameter of `channel` (an RpdoChannel or a TpdoChannel).
