@@ -13,14 +13,19 @@
 //   bool attached() const noexcept;  // its hooks and listeners found room in the node
 //   static const od::NameTable& names() noexcept;  // host programs only
 //   kSummary (one line), kStorageBytes (its non-volatile memory), kControlWords (its command
-//   words, space-separated, "" for none).
+//   words, space-separated, "" for none); optionally kHighestNodeId, when the device takes
+//   fewer node-ids than CiA 301's 1..127 (highestNodeId()).
 #pragma once
 
 #include <stddef.h>
+#include <stdint.h>
+
+#include <type_traits>
 
 #include "example_target.hpp"
 #include "gefran_target.hpp"
 #include "mseries_target.hpp"
+#include "santeng_target.hpp"
 #include "solo_target.hpp"
 
 // NOLINTBEGIN(cppcoreguidelines-macro-usage,bugprone-macro-parentheses): an X-macro, the one
@@ -31,6 +36,7 @@
   X(solo, ::costa::solo::SoloTarget)          \
   X(gra, ::costa::gefran::GraTarget)          \
   X(grn, ::costa::gefran::GrnTarget)          \
+  X(santeng, ::costa::santeng::SantengTarget)      \
   X(mseries, ::costa::mseries::MSeriesTarget)
 
 namespace costa::devices {
@@ -55,6 +61,20 @@ constexpr void forEachDevice(Visitor&& visit) {
 #undef COSTA_VISIT_DEVICE
 }
 // NOLINTEND(cppcoreguidelines-macro-usage,bugprone-macro-parentheses)
+
+/// The largest node-id a composition takes: its kHighestNodeId, else 127 (CiA 301).
+template <typename Composition, typename = void>
+struct HighestNodeId {
+  static constexpr uint8_t kValue = 127;
+};
+template <typename Composition>
+struct HighestNodeId<Composition, std::void_t<decltype(Composition::kHighestNodeId)>> {
+  static constexpr uint8_t kValue = Composition::kHighestNodeId;
+};
+template <typename Composition>
+constexpr uint8_t highestNodeId() noexcept {
+  return HighestNodeId<Composition>::kValue;
+}
 
 /// How many devices the list has.
 inline constexpr size_t kCount = [] {

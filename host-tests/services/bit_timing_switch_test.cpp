@@ -53,6 +53,24 @@ TEST(BitTimingSwitch, ATimingWithoutARateIsNeverAskedFor) {
   EXPECT_TRUE(timing.inUse() == k250);
 }
 
+TEST(BitTimingSwitch, ADevicesOwnTableGivesTheRatesOfSelector128) {
+  RecordingBitRateControl controller;
+  static constexpr uint32_t kRates[] = {25000, 33333};
+  static constexpr BitRateTable kTable{kRates, 2};
+  BitTimingSwitch timing(&controller, k250);
+  timing.switchTo(LssBitTiming{128, 0}, &kTable);
+  EXPECT_TRUE(timing.inUse() == (LssBitTiming{128, 0}));
+  timing.switchTo(LssBitTiming{128, 2}, &kTable);  // beyond the table
+  timing.switchTo(LssBitTiming{129, 0}, &kTable);  // another manufacturer table
+  timing.switchTo(LssBitTiming{128, 1});           // no table given
+  EXPECT_TRUE(timing.inUse() == (LssBitTiming{128, 0}));
+  timing.setPending(LssBitTiming{128, 1});
+  timing.applyPending(&kTable);
+  EXPECT_TRUE(timing.inUse() == (LssBitTiming{128, 1}));
+  timing.switchTo(k500, &kTable);  // CiA 305's table as before
+  EXPECT_EQ(controller.asked, (std::vector<uint32_t>{25000, 33333, 500000}));
+}
+
 TEST(BitTimingSwitch, ThePendingTimingAppliesOnlyWhenItDiffers) {
   RecordingBitRateControl controller;
   BitTimingSwitch timing(&controller, k250);

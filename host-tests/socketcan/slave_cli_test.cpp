@@ -146,6 +146,8 @@ TEST(SlaveCommandLine, BadArgumentsAreOneLineAndNonZero) {
       {{"--node-id", "300", "example"},
        "costa-slave: invalid node-id '300': expected 1..127 (or 255: unconfigured, LSS only)\n"},
       {{}, "costa-slave: no DEVICE given"},
+      {{"--node-id", "127", "santeng"},
+       "costa-slave: invalid node-id 127 for santeng: it takes 1..126\n"},
   };
   for (const Case& c : cases) {
     SlaveProcess slave(c.arguments);

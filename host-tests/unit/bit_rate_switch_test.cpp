@@ -1,7 +1,7 @@
 // The node re-times its CAN controller through NodeSettings::bitRateControl: once, at the LSS
 // switch moment, with nothing sent during the switch; at power-on when a stored LSS bit timing
 // differs from the settings; never when nothing changes. A refused switch keeps the bit timing
-// in use.
+// in use. A device's own bit timing table (selector 128) gives rates outside CiA 305's.
 #include <memory>
 
 #include "costa/port/memory/memory_storage.hpp"
@@ -169,6 +169,54 @@ TEST(PowerOnBitRate, WithoutAStoredBitTimingThePortKeepsTheRateItWasStartedWith)
   auto again = std::make_unique<example::ExampleTarget>(can, configWith(&rate, &storage));
   again->start(0);
   EXPECT_EQ(rate.count(), 0U);
+}
+
+/// Rates of a device's own bit timing table (selector 128): 25 kbit/s, and a rate beside it.
+constexpr uint32_t kOwnRates[] = {25000, 33333};
+constexpr BitRateTable kOwnTable{kOwnRates, 2};
+
+/// An example node whose pending bit timing is `pending` when reset communication runs, with a
+/// recording bit rate control and, when `ownTable`, kOwnRates as its table 128.
+class OwnBitTimingTable : public ::testing::Test {
+ protected:
+  std::string resetWith(LssBitTiming pending, bool ownTable) {
+    NodeSettings settings;
+    settings.bitRateControl = &rate_;
+    if (ownTable) {
+      settings.manufacturerBitRates = &kOwnTable;
+    }
+    bus_ = std::make_unique<InProcessBus>(exampleWith(settings));
+    bus_->node().setPendingBitTiming(pending);
+    return playText("tx 701 [1] 00\nrx 000 [2] 82 01\ntx 701 [1] 00", *bus_);
+  }
+  RecordingBitRate rate_;
+  std::unique_ptr<InProcessBus> bus_;
+};
+
+TEST_F(OwnBitTimingTable, AnEntryOfTable128SwitchesToItsRate) {
+  EXPECT_EQ(resetWith(LssBitTiming{128, 0}, true), "");
+  ASSERT_EQ(rate_.count(), 1U);
+  EXPECT_EQ(rate_.at(0).bitsPerSecond, 25000U);
+  EXPECT_EQ(bus_->node().bitTiming(), (LssBitTiming{128, 0}));
+}
+
+TEST_F(OwnBitTimingTable, CiaEntriesStillHaveTheirRates) {
+  EXPECT_EQ(resetWith(LssBitTiming{0, 6}, true), "");
+  ASSERT_EQ(rate_.count(), 1U);
+  EXPECT_EQ(rate_.at(0).bitsPerSecond, 50000U);
+}
+
+TEST_F(OwnBitTimingTable, AnIndexBeyondTheTableOrAnotherTableHasNoRate) {
+  EXPECT_EQ(resetWith(LssBitTiming{128, 2}, true), "");
+  EXPECT_EQ(resetWith(LssBitTiming{129, 0}, true), "");
+  EXPECT_EQ(rate_.count(), 0U);
+  EXPECT_EQ(bus_->node().bitTiming(), (LssBitTiming{0, 3}));  // unchanged
+}
+
+TEST_F(OwnBitTimingTable, WithoutATableTable128HasNoRate) {
+  EXPECT_EQ(resetWith(LssBitTiming{128, 0}, false), "");
+  EXPECT_EQ(rate_.count(), 0U);
+  EXPECT_EQ(bus_->node().bitTiming(), (LssBitTiming{0, 3}));
 }
 
 }  // namespace

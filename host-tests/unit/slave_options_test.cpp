@@ -62,5 +62,15 @@ TEST(SlaveOptions, RejectsBadInputWithOneClearLine) {
   EXPECT_EQ(error.find('\n'), std::string::npos);
 }
 
+TEST(SlaveOptions, RefusesANodeIdTheDeviceDoesNotTake) {
+  SlaveOptions options;
+  std::string error;
+  EXPECT_FALSE(parse({"santeng", "--node-id", "127"}, &options, &error));  // 1..126 (W11)
+  EXPECT_EQ(error, "invalid node-id 127 for santeng: it takes 1..126");
+  ASSERT_TRUE(parse({"santeng", "--node-id", "126"}, &options, &error)) << error;
+  EXPECT_EQ(options.nodeId, 126);
+  ASSERT_TRUE(parse({"--node-id", "127", "example"}, &options, &error)) << error;
+}
+
 }  // namespace
 }  // namespace costa::host

@@ -4,6 +4,8 @@
 #include "example_od.hpp"
 #include "frame_text.hpp"
 #include "frame_trace.hpp"
+#include "santeng_od.hpp"
+#include "santeng_profile.hpp"
 
 namespace costa::host {
 namespace {
@@ -126,6 +128,34 @@ TEST(TraceWithProfile, EmcyWithTheRegisterInTheFourthByte) {
   EXPECT_EQ(describe("08A [2] 00 00"), "EMCY node 10 data 00 00");
   EXPECT_EQ(describe("081 [8] 30 81 11 00 00 00 00 00"),
             "EMCY node 1 code 0x8130 register 0x11 data 00 00 00 00 00");
+}
+
+// The Santeng's lenient SDO server (W2-W4): its short requests and its 0x2C are read as it
+// serves them; another node's (and a CiA 301 node's) stay malformed or segmented.
+TEST(TraceWithProfile, SantengShortRequestsAndCountAlone) {
+  gen::santeng::Values values{};
+  od::ObjectDictionary dictionary(gen::santeng::kDefinition, &values);
+  dictionary.setNodeId(1);
+  FrameTracer tracer(&dictionary, &gen::santeng::kNames, santeng::profile());
+  const auto describe = [&tracer](const char* text) {
+    CanFrame frame;
+    std::string error;
+    EXPECT_TRUE(parseFrame(text, &frame, &error)) << error;
+    return tracer.describe(frame, 1);
+  };
+  EXPECT_EQ(describe("601 [7] 23 01 20 01 00 09 34"),
+            "SDO download 0x2001:01 = 3410176 (7 bytes, the rest taken as 0)");
+  EXPECT_EQ(describe("601 [4] 40 03 21 01"), "SDO upload 0x2103:01 (4 bytes, the rest taken as 0)");
+  EXPECT_EQ(describe("601 [3] 40 03 21"), "SDO request (malformed, ignored)");
+  EXPECT_EQ(describe("602 [7] 23 01 20 01 00 09 34"), "SDO request (malformed, ignored)");
+  EXPECT_EQ(describe("601 [8] 2C 0E 20 01 00 00 00 00"), "SDO download 0x200E:01 = 0 (0x00)");
+  EXPECT_EQ(describe("601 [8] 23 00 20 01 0C FE 00 00"), "SDO download 0x2000:01 = -500");
+  EXPECT_EQ(describe("602 [8] 2C 0E 20 01 00 00 00 00"), "SDO download 0x200E:01 segmented");
+  FrameTracer cia301(&dictionary, &gen::santeng::kNames);
+  CanFrame frame;
+  std::string error;
+  ASSERT_TRUE(parseFrame("601 [7] 23 01 20 01 00 09 34", &frame, &error)) << error;
+  EXPECT_EQ(cia301.describe(frame, 1), "SDO request (malformed, ignored)");
 }
 
 TEST(TraceWithProfile, HeartbeatByteWhileAnErrorIsActive) {

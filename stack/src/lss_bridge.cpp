@@ -10,7 +10,7 @@ bool LssBridge::bitTimingSupported(LssBitTiming timing) noexcept {
 }
 
 void LssBridge::activateBitTiming(LssBitTiming timing) noexcept {
-  bitTiming_.switchTo(timing);
+  bitTiming_.switchTo(timing, settings_.manufacturerBitRates);
   bitTiming_.setPending(timing);
   listeners_.notify([timing](NodeEvents& listener) { listener.onBitTimingActivation(timing); });
 }

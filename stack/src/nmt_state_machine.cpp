@@ -64,7 +64,8 @@ void NmtStateMachine::resetCommunication() noexcept {
     pendingNodeId_ = lss.pendingNodeId();  // configured by LSS: applies now (CiA 305)
   }
   nodeId_ = cob::isValidNodeId(pendingNodeId_) ? pendingNodeId_ : cob::kLssUnconfigured;
-  services_.bitTiming.applyPending();  // before the boot-up frame, which uses the new rate
+  // Before the boot-up frame, which uses the new rate.
+  services_.bitTiming.applyPending(services_.settings.manufacturerBitRates);
   od::ObjectDictionary& dictionary = services_.dictionary;
   dictionary.setNodeId(nodeId_);
   dictionary.restoreDefaults(kCommunicationFirst, kCommunicationLast);

@@ -52,6 +52,13 @@ bool Node::attachHook(uint16_t first, uint16_t last, ObjectHook& hook) noexcept 
   return true;
 }
 
+AbortCode Node::writeEntry(uint16_t index, uint8_t subIndex, const uint8_t* data,
+                           size_t length) noexcept {
+  od::EntryRef ref;
+  const AbortCode found = dictionary_.find(index, subIndex, &ref);
+  return found != AbortCode::kNone ? found : access_.write(ref, data, length);
+}
+
 void Node::flushTx() noexcept {
   tx_.flush(clock_.now);
   clock_.schedule(sdo_.nextDeadline());  // a block upload burst may go on now

@@ -129,7 +129,7 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
                                         : unspecifiedExpeditedLength(ref_, request + 4);
     const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
     if (written != AbortCode::kNone) {
-      sendAbort(index_, subIndex_, written);
+      finishExpedited(request, written);
       return;
     }
     CanFrame response;
@@ -137,6 +137,10 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
     copyBytes(response.data, request, 4);  // the multiplexer as asked
     response.data[0] = kScsInitiateDownloadResponse;
     channel_.send(response);
+    return;
+  }
+  if (!sizeIndicated && (request[0] & 0x0CU) != 0U && profile_.expeditedByCountAlone) {
+    downloadByCountAlone(request);
     return;
   }
   const AbortCode begun =
@@ -148,6 +152,25 @@ COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
   state_ = State::kDownloadSegments;
   toggle_ = 0;
   armTimeout(now);
+  const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
+  respond(response);
+}
+
+void SdoServer::downloadByCountAlone(const uint8_t* request) noexcept {
+  finishExpedited(request,
+                  writer_.writeWhole(ref_, request + 4, 4U - ((request[0] >> 2U) & 0x03U)));
+}
+
+void SdoServer::finishExpedited(const uint8_t* request, AbortCode verdict) noexcept {
+  if (verdict == AbortCode::kLengthTooHigh && profile_.expeditedKeepsLowBytes &&
+      od::isNumeric(ref_.type())) {
+    // More bytes than the number has: little-endian, its low bytes come first.
+    verdict = writer_.writeWhole(ref_, request + 4, ref_.size());
+  }
+  if (verdict != AbortCode::kNone) {
+    sendAbort(index_, subIndex_, verdict);
+    return;
+  }
   const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
   respond(response);
 }
@@ -188,12 +211,25 @@ COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcep
   channel_.send(response);
 }
 
+// NOLINTNEXTLINE(misc-no-recursion): calls onRequest() once with 8 bytes, which never come back
+bool SdoServer::onShortRequest(const CanFrame& frame, Microseconds now) noexcept {
+  const uint8_t shortest = profile_.shortestRequest == 0U ? 1U : profile_.shortestRequest;
+  if (frame.rtr || frame.dlc >= 8U || frame.dlc < shortest) {
+    return false;  // CiA 301: an SDO frame has 8 bytes; RTR frames are no SDO requests
+  }
+  CanFrame whole = frame;
+  fillBytes(whole.data + frame.dlc, 0, 8U - frame.dlc);  // the bytes it lacks count as 0
+  whole.dlc = 8;
+  return onRequest(whole, now);
+}
+
+// NOLINTNEXTLINE(misc-no-recursion): onShortRequest() calls back once, with 8 bytes
 bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
   if (frame.dlc != 8U || frame.rtr) {
-    return false;
+    return onShortRequest(frame, now);
   }
-  lastCall_ = now;
   const uint8_t* request = frame.data;
+  lastCall_ = now;
   const auto ccs = static_cast<uint8_t>(request[0] >> 5U);
   // The frequent requests first: the next segment of an upload, a new expedited transfer.
   if (state_ == State::kUploadSegments && ccs == kCcsUploadSegment) {

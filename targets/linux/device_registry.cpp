@@ -30,7 +30,8 @@ std::vector<DeviceEntry> listedDevices() {
     using Composition = typename decltype(device)::Composition;
     table.push_back(DeviceEntry{device.name, Composition::kSummary,
                                 aliasOf<Composition>(WithAlias{}), Composition::settings().lss,
-                                Composition::kStorageBytes, &build<Composition>});
+                                devices::highestNodeId<Composition>(), Composition::kStorageBytes,
+                                &build<Composition>});
   });
   return table;
 }

@@ -18,8 +18,9 @@ struct DeviceEntry {
   /// Another name the device answers to (its composition's optional kAlias: a name that is
   /// no C++ identifier, such as m-series), or null.
   const char* alias;
-  bool lss;             ///< it has LSS: it may start without a node-id (--node-id 255)
-  size_t storageBytes;  ///< its non-volatile memory: the size of the --storage file
+  bool lss;               ///< it has LSS: it may start without a node-id (--node-id 255)
+  uint8_t highestNodeId;  ///< it takes node-ids 1..highestNodeId (127 but for a few devices)
+  size_t storageBytes;    ///< its non-volatile memory: the size of the --storage file
   /// Builds the device with `config` over `storage` (may be null; `config.storage` is it).
   std::unique_ptr<DeviceTarget> (*build)(CanTransmitter& can, const DeviceConfig& config,
                                          std::unique_ptr<port::FileStorage> storage);

@@ -34,6 +34,8 @@ class FrameTracer {
   std::string describeEmcy(const CanFrame& frame, bool local) const;
   std::string describeErrorControl(const CanFrame& frame, bool local);
   std::string describeSdoRequest(const CanFrame& frame, bool local);
+  /// An SDO request's 8 bytes (a short one's completed with zeros).
+  std::string describeSdoRequestData(const uint8_t* d, bool local);
   std::string describeSdoResponse(const CanFrame& frame, bool local);
   std::string describeBlockRequest(const uint8_t* data, const std::string& entry);
   std::string describeBlockResponse(const uint8_t* data, const std::string& entry,

@@ -1,4 +1,5 @@
 // SDO and LSS parts of FrameTracer.
+#include <algorithm>
 #include <cstdio>
 
 #include "costa/od/abort_code.hpp"
@@ -35,10 +36,23 @@ std::string abortText(const uint8_t* data, const std::string& entry) {
 }  // namespace
 
 std::string FrameTracer::describeSdoRequest(const CanFrame& frame, bool local) {
-  if (frame.rtr || frame.dlc != 8U) {
+  // The local node may serve requests shorter than 8 bytes (SdoProfile::shortestRequest).
+  const uint8_t shortest = local && profile_.sdo.shortestRequest != 0U
+                               ? profile_.sdo.shortestRequest
+                               : static_cast<uint8_t>(local ? 1U : 8U);
+  if (frame.rtr || frame.dlc > 8U || frame.dlc < shortest) {
     return "SDO request (malformed, ignored)";
   }
-  const uint8_t* d = frame.data;
+  if (frame.dlc < 8U) {
+    uint8_t whole[8] = {};
+    std::copy(frame.data, frame.data + frame.dlc, whole);
+    return describeSdoRequestData(whole, local) + " (" + std::to_string(frame.dlc) +
+           " bytes, the rest taken as 0)";
+  }
+  return describeSdoRequestData(frame.data, local);
+}
+
+std::string FrameTracer::describeSdoRequestData(const uint8_t* d, bool local) {
   if (block_ == Block::kDownloadSegments && d[0] != 0x80U) {
     return describeBlockSegment(d);
   }
@@ -59,8 +73,11 @@ std::string FrameTracer::describeSdoRequest(const CanFrame& frame, bool local) {
       return text;
     }
     case 1: {
-      if ((d[0] & 0x02U) != 0U) {
-        const size_t count = (d[0] & 0x01U) != 0U ? 4U - ((d[0] >> 2U) & 3U) : 4U;
+      // e = s = 0 with a byte count: expedited for a node that reads the count alone.
+      const bool countAlone = local && profile_.sdo.expeditedByCountAlone && (d[0] & 0x03U) == 0U &&
+                              (d[0] & 0x0CU) != 0U;
+      if ((d[0] & 0x02U) != 0U || countAlone) {
+        const size_t count = (d[0] & 0x01U) != 0U || countAlone ? 4U - ((d[0] >> 2U) & 3U) : 4U;
         return "SDO download " + entry + " = " + formatValue(index, sub, d + 4, count, local);
       }
       downloading_ = true;

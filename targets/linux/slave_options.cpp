@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdlib>
 
+#include "costa/cob_ids.hpp"
 #include "device_registry.hpp"
 
 namespace costa::host {
@@ -57,8 +58,14 @@ bool checkDevice(const SlaveOptions& options, std::string* error) {
     *error = "no DEVICE given (one of: " + deviceNames() + ")";
     return false;
   }
-  if (findDevice(options.device) == nullptr) {
+  const DeviceEntry* device = findDevice(options.device);
+  if (device == nullptr) {
     *error = "unknown device '" + options.device + "' (one of: " + deviceNames() + ")";
+    return false;
+  }
+  if (options.nodeId > device->highestNodeId && options.nodeId != cob::kLssUnconfigured) {
+    *error = "invalid node-id " + std::to_string(options.nodeId) + " for " + options.device +
+             ": it takes 1.." + std::to_string(device->highestNodeId);
     return false;
   }
   return true;

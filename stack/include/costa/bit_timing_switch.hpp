@@ -23,11 +23,13 @@ class BitTimingSwitch {
   void setPending(LssBitTiming timing) noexcept { pending_ = timing; }
 
   /// Re-times the controller (when there is one) and makes `timing` the one in use if it
-  /// accepted. A timing without a CiA 305 bit rate, or one the controller refuses, leaves the
-  /// timing in use as it was.
-  void switchTo(LssBitTiming timing) noexcept {
+  /// accepted. A timing without a bit rate (in CiA 305's table, or in `table`, the device's own:
+  /// NodeSettings::manufacturerBitRates), or one the controller refuses, leaves the timing in
+  /// use as it was. Out of line: its callers (LSS, reset communication) share one copy.
+  [[gnu::noinline]] void switchTo(LssBitTiming timing,
+                                  const BitRateTable* table = nullptr) noexcept {
     if (control_ != nullptr) {
-      const uint32_t rate = bitRateOf(timing);
+      const uint32_t rate = bitRateOf(timing, table);
       if (rate == 0U || !control_->setBitRate(rate)) {
         return;
       }
@@ -37,9 +39,9 @@ class BitTimingSwitch {
 
   /// Reset communication: switches to the pending timing when it differs from the one in use
   /// (a refused switch is tried again at the next reset communication).
-  void applyPending() noexcept {
+  void applyPending(const BitRateTable* table = nullptr) noexcept {
     if (pending_ != inUse_) {
-      switchTo(pending_);
+      switchTo(pending_, table);
     }
   }
 

@@ -25,10 +25,27 @@ inline bool operator!=(const LssBitTiming& a, const LssBitTiming& b) noexcept {
   return !(a == b);
 }
 
-/// Bit rate of `timing` in bit/s: its CiA 305 table rate, 0 when it has none (automatic bit
-/// rate detection, a reserved entry, a manufacturer-specific table).
-constexpr uint32_t bitRateOf(LssBitTiming timing) noexcept {
-  return timing.tableSelector == 0U ? cia305BitRate(timing.tableIndex) : 0U;
+/// The table selector of a device's own bit timing table (the first manufacturer-specific one).
+inline constexpr uint8_t kManufacturerBitTimingTable = 128;
+
+/// A device's own bit timing table (NodeSettings::manufacturerBitRates): the rate in bit/s of
+/// each index of table selector kManufacturerBitTimingTable.
+struct BitRateTable {
+  const uint32_t* bitsPerSecond = nullptr;
+  uint8_t count = 0;
+};
+
+/// Bit rate of `timing` in bit/s: its CiA 305 table rate, or its rate in the device's own
+/// `table` (selector 128); 0 when it has none (automatic bit rate detection, a reserved entry,
+/// another manufacturer-specific table, an index beyond the device's table).
+constexpr uint32_t bitRateOf(LssBitTiming timing, const BitRateTable* table = nullptr) noexcept {
+  if (timing.tableSelector == 0U) {
+    return cia305BitRate(timing.tableIndex);
+  }
+  return table != nullptr && timing.tableSelector == kManufacturerBitTimingTable &&
+                 timing.tableIndex < table->count
+             ? table->bitsPerSecond[timing.tableIndex]
+             : 0U;
 }
 
 static_assert(bitRateOf(LssBitTiming{0, 3}) == 250000);

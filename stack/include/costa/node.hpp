@@ -157,6 +157,12 @@ class Node {
   /// raises goes out before this returns.
   void onControllerEvent(CanControllerEvent event, Microseconds now) noexcept;
   bool busOff() const noexcept { return errorControl_.busOff(); }
+  /// Writes an entry as a remote write does, through its hook (a service's own: 0x1017 restarts
+  /// the heartbeat, a PDO parameter rebinds its PDO), but without access rights: the device's
+  /// own way of configuring itself (a serial port, a keypad). Returns the CiA 301 abort code an
+  /// SDO download would get (0x06020000 for a missing entry). O(log objects) and the hook.
+  [[nodiscard]] AbortCode writeEntry(uint16_t index, uint8_t subIndex, const uint8_t* data,
+                                     size_t length) noexcept;
   /// Saves storage groups now (bit g for group g: groupBit()), each on its own, with the
   /// power-loss guarantee of 0x1010: for vendor save objects. kNotLaidOut without storage.
   [[nodiscard]] StoreResult saveGroups(uint32_t groups) noexcept { return stored_.save(groups); }

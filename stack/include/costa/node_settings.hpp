@@ -39,6 +39,9 @@ struct NodeSettings {
   /// Bit timing at power-on (CiA 305 index 3: 250 kbit/s): the rate the integrator starts the
   /// CAN controller with. A stored LSS bit timing replaces it at power-on.
   LssBitTiming bitTiming{0, 3};
+  /// The device's own bit timing table (CiA 305 table selector 128): rates outside the CiA 305
+  /// table (25 kbit/s) that a device sets by its own means; null: none.
+  const BitRateTable* manufacturerBitRates = nullptr;
   /// The controller to re-time when the bit timing in use changes (LSS activate bit timing, a
   /// pending bit timing at reset communication or power-on); null: none, the node only records
   /// the change (and NodeEvents::onBitTimingActivation() tells the application of LSS's).

@@ -19,6 +19,16 @@ struct SdoProfile {
   /// Aborts for values out of range: CiA 301's 0x06090031 (too high) / 0x06090032 (too low),
   /// or 0x06090030 (value range exceeded) for both when false.
   bool distinguishHighAndLowValues = true;
+  /// The shortest request (DLC) the server answers; the bytes a shorter frame lacks count as 0,
+  /// and every reply has 8 bytes. CiA 301: 8 (shorter frames are ignored). 1..8; 0 acts as 1.
+  uint8_t shortestRequest = 8;
+  /// An expedited download with more bytes than its numeric object (0x23 to an INTEGER16)
+  /// stores the object's low bytes, then checks its limits. CiA 301: abort 0x06070012.
+  bool expeditedKeepsLowBytes = false;
+  /// An initiate download with e = 0 and s = 0 whose byte count n is not 0 (0x24, 0x28, 0x2C)
+  /// is an expedited download of 4 - n bytes. CiA 301: n is valid only with e = s = 1, so such
+  /// a request starts a segmented download without size indication.
+  bool expeditedByCountAlone = false;
 };
 
 }  // namespace costa

@@ -34,9 +34,10 @@ class SdoServer {
 
   void setNodeId(uint8_t nodeId) noexcept { channel_.setNodeId(nodeId); }
 
-  /// Handles a frame received on 0x600+id. Frames with DLC other than 8 and RTR frames are
-  /// ignored, as CiA 301 requires: returns false for them. O(log n) in the dictionary size
-  /// plus the hook's cost.
+  /// Handles a frame received on 0x600+id. RTR frames and frames with a DLC other than 8 are
+  /// ignored, as CiA 301 requires (returns false for them), except requests of at least
+  /// SdoProfile::shortestRequest bytes, whose missing bytes count as 0. O(log n) in the
+  /// dictionary size plus the hook's cost.
   [[nodiscard]] bool onRequest(const CanFrame& frame, Microseconds now) noexcept;
 
   /// Aborts a transfer that has been silent longer than the timeout (0x05040000); queues
@@ -74,7 +75,18 @@ class SdoServer {
   void armTimeout(Microseconds now) noexcept;
   /// A request while no transfer runs: starts one, or aborts.
   void initiate(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
+  /// A request shorter than 8 bytes, or an RTR frame: served as 8 bytes, the missing ones 0,
+  /// when the profile serves its length (SdoProfile::shortestRequest: onRequest() once more,
+  /// with 8 bytes), else ignored (false).
+  [[gnu::noinline]] bool onShortRequest(const CanFrame& frame, Microseconds now) noexcept;
   COSTA_HOT_INLINE void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
+  /// A byte count without e and s: an expedited download of that count, for a device that
+  /// reads the count alone (SdoProfile::expeditedByCountAlone).
+  [[gnu::noinline]] void downloadByCountAlone(const uint8_t* request) noexcept;
+  /// An expedited download off the usual path, given the write's `verdict`: a number refused
+  /// as too long is written again as its low bytes (SdoProfile::expeditedKeepsLowBytes); then
+  /// the response or the abort.
+  void finishExpedited(const uint8_t* request, AbortCode verdict) noexcept;
   void downloadSegment(const uint8_t* request, Microseconds now) noexcept;
   COSTA_HOT_INLINE void initiateUpload(const uint8_t* request, Microseconds now) noexcept;
   void answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept;

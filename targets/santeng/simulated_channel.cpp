@@ -1,0 +1,136 @@
+#include "simulated_channel.hpp"
+
+namespace costa::santeng {
+namespace {
+
+/// Units (1/10000 RPM) running for 1 ms, times counts per revolution, per count.
+constexpr int64_t kUnitMillisecondsPerRevolution = 60000 * SimulatedChannel::kUnitsPerRpm;
+/// Largest magnitude of a reported current (A x 10).
+constexpr int64_t kLargestCurrent = 32767;
+
+int64_t magnitude(int64_t x) {
+  return x < 0 ? -x : x;
+}
+
+int64_t sign(int64_t x) {
+  return x < 0 ? -1 : (x > 0 ? 1 : 0);
+}
+
+/// Moves `value` towards `target` by at most `step` (> 0).
+int64_t approach(int64_t value, int64_t target, int64_t step) {
+  if (value < target) {
+    return value + step > target ? target : value + step;
+  }
+  return value - step < target ? target : value - step;
+}
+
+bool speedMode(ChannelMode mode) {
+  return mode != ChannelMode::kCountPosition;
+}
+
+int16_t clamp16(int64_t x, int64_t limit) {
+  return static_cast<int16_t>(x > limit ? limit : (x < -limit ? -limit : x));
+}
+
+}  // namespace
+
+void SimulatedChannel::reset() noexcept {
+  const bool stalled = stalled_;
+  *this = SimulatedChannel{};
+  stalled_ = stalled;
+}
+
+int64_t SimulatedChannel::positionTarget(const ChannelCommand& command) const noexcept {
+  const int64_t remaining = int64_t{command.targetCount} - count_;
+  int64_t cruise = magnitude(command.positionSpeed);
+  cruise = cruise < command.maxRpm ? cruise : command.maxRpm;
+  if (remaining == 0 || cruise == 0 || ramped_ * sign(remaining) < 0) {
+    return 0;  // there, standing still, or moving away: brake first
+  }
+  if (command.deceleration > 0) {
+    const int64_t rpm = magnitude(ramped_) / kUnitsPerRpm;
+    const int64_t stopping = rpm * rpm * command.encoderLines / (3 * int64_t{command.deceleration});
+    if (stopping >= magnitude(remaining)) {
+      return 0;
+    }
+  }
+  return sign(remaining) * cruise * kUnitsPerRpm;
+}
+
+int64_t SimulatedChannel::targetSpeed(const ChannelCommand& command) const noexcept {
+  if (!command.powered || command.stopping) {
+    return 0;
+  }
+  if (speedMode(command.mode)) {
+    return int64_t{command.motorCommand} * command.maxRpm * (kUnitsPerRpm / 1000);
+  }
+  return positionTarget(command);
+}
+
+bool SimulatedChannel::atRest(const ChannelCommand& command) const noexcept {
+  return actual_ == 0 && ramped_ == 0 && targetSpeed(command) == 0 && maxRpm_ == command.maxRpm &&
+         mode_ == command.mode;
+}
+
+void SimulatedChannel::stepMillisecond(const ChannelCommand& command) noexcept {
+  maxRpm_ = command.maxRpm;
+  mode_ = command.mode;
+  const int64_t before = ramped_;
+  if (!command.powered) {
+    ramped_ = 0;
+    actual_ = approach(actual_, 0, kCoastRate);
+  } else {
+    const int64_t target = targetSpeed(command);
+    const bool speedingUp = magnitude(target) > magnitude(ramped_) && target * ramped_ >= 0;
+    const int64_t rate = speedingUp ? command.acceleration : command.deceleration;
+    ramped_ = rate <= 0 ? target : approach(ramped_, target, rate);
+    actual_ = stalled_ ? 0 : ramped_;
+  }
+  change_ = magnitude(ramped_ - before);
+  move(command);
+}
+
+void SimulatedChannel::move(const ChannelCommand& command) noexcept {
+  countRemainder_ += actual_ * 4 * command.encoderLines;
+  const int64_t counts = countRemainder_ / kUnitMillisecondsPerRevolution;
+  countRemainder_ -= counts * kUnitMillisecondsPerRevolution;
+  hallRemainder_ += actual_ * kHallCountsPerRevolution;
+  const int64_t hallCounts = hallRemainder_ / kUnitMillisecondsPerRevolution;
+  hallRemainder_ -= hallCounts * kUnitMillisecondsPerRevolution;
+  hallCount_ += hallCounts;
+  const int64_t remaining = int64_t{command.targetCount} - count_;
+  const bool positioning = !speedMode(command.mode) && command.powered && !command.stopping;
+  if (positioning && remaining != 0 && sign(counts) == sign(remaining) &&
+      magnitude(counts) >= magnitude(remaining)) {
+    count_ = command.targetCount;  // arrived: stop on the count
+    ramped_ = 0;
+    actual_ = 0;
+    countRemainder_ = 0;
+    return;
+  }
+  count_ += counts;
+}
+
+void SimulatedChannel::read(ChannelReading* reading) const noexcept {
+  const int64_t unitsPerMille = int64_t{maxRpm_} * (kUnitsPerRpm / 1000);
+  ChannelReading out;
+  out.speedRpm = static_cast<int32_t>(actual_ / kUnitsPerRpm);
+  out.appliedPermille = clamp16(ramped_ / unitsPerMille, 1000);
+  out.speedPermille = clamp16(actual_ / unitsPerMille, 1000);
+  out.encoderCount = static_cast<int32_t>(static_cast<uint32_t>(count_));
+  out.hallCount = static_cast<int32_t>(static_cast<uint32_t>(hallCount_));
+  const bool blocked = stalled_ && ramped_ != 0;
+  int64_t motor = magnitude(actual_) / (50 * kUnitsPerRpm) + change_ / 500;
+  if (blocked) {
+    motor = magnitude(out.appliedPermille) / 10;
+  }
+  out.motorAmpsTimes10 = clamp16(motor, kLargestCurrent);
+  out.batteryAmpsTimes10 = clamp16(motor * magnitude(out.appliedPermille) / 1000, kLargestCurrent);
+  if (blocked) {
+    out.motorFlags = static_cast<uint8_t>(kMotorStalled |
+                                          (mode_ != ChannelMode::kOpenLoopSpeed ? kLoopError : 0U));
+  }
+  *reading = out;
+}
+
+}  // namespace costa::santeng
