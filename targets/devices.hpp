@@ -36,7 +36,7 @@
   X(solo, ::costa::solo::SoloTarget)          \
   X(gra, ::costa::gefran::GraTarget)          \
   X(grn, ::costa::gefran::GrnTarget)          \
-  X(santeng, ::costa::santeng::SantengTarget)      \
+  X(santeng, ::costa::santeng::SantengTarget) \
   X(mseries, ::costa::mseries::MSeriesTarget)
 
 namespace costa::devices {
