@@ -24,6 +24,7 @@
 
 #include "example_target.hpp"
 #include "gefran_target.hpp"
+#include "mseries_target.hpp"
 #include "santeng_target.hpp"
 #include "solo_target.hpp"
 
@@ -35,7 +36,8 @@
   X(solo, ::costa::solo::SoloTarget)          \
   X(gra, ::costa::gefran::GraTarget)          \
   X(grn, ::costa::gefran::GrnTarget)          \
-  X(santeng, ::costa::santeng::SantengTarget)
+  X(santeng, ::costa::santeng::SantengTarget) \
+  X(mseries, ::costa::mseries::MSeriesTarget)
 
 namespace costa::devices {
 

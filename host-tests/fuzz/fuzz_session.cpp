@@ -137,6 +137,9 @@ class Session {
     if (problem.empty()) {
       problem = checkStateMachines(node, device_->hasLss());
     }
+    if (problem.empty()) {
+      problem = device_->checkDevice();
+    }
     port::MemoryStorage& storage = device_->storage();
     if (problem.empty() && storage.modifyingCalls() != storageChanges_) {
       storageChanges_ = storage.modifyingCalls();

@@ -8,6 +8,20 @@
 namespace costa::fuzz {
 namespace {
 
+/// A composition's own invariant: its consistent() when it has one (the first overload).
+struct WithoutInvariant {};
+struct WithInvariant : WithoutInvariant {};
+template <typename Composition, typename = decltype(&Composition::consistent)>
+std::string invariantOf(const Composition& composition, WithInvariant /*unused*/) {
+  char why[128] = {};
+  return composition.consistent(why, sizeof(why)) ? std::string() : std::string(why);
+}
+template <typename Composition>
+std::string invariantOf(const Composition& composition, WithoutInvariant /*unused*/) {
+  (void)composition;
+  return "";
+}
+
 /// A composition over its storage (declared first: it outlives the composition), rebuilt at
 /// every power-on as costa-slave builds it (device_registry.cpp): the header's node-id, given
 /// explicitly, or the device's own; the storage in the place of a --storage file.
@@ -45,6 +59,9 @@ class FuzzedComposition final : public FuzzedDevice {
     return composition_->control(command, why, sizeof(why)) ? std::string() : why;
   }
   port::MemoryStorage& storage() override { return storage_; }
+  std::string checkDevice() const override {
+    return composition_ ? invariantOf(*composition_, WithInvariant{}) : std::string();
+  }
 
  private:
   CanTransmitter& can_;

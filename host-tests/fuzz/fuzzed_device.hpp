@@ -39,6 +39,10 @@ class FuzzedDevice {
 
   /// The device's non-volatile memory.
   virtual port::MemoryStorage& storage() = 0;
+  /// "" when the device's own invariant holds (a composition's optional
+  /// `bool consistent(char* why, size_t whySize) const`, such as a drive's status word that
+  /// shows its state), else why not. "" for a composition without one.
+  virtual std::string checkDevice() const = 0;
 };
 
 /// What the fuzzer knows of a device of the list without running it.

@@ -190,5 +190,22 @@ TEST(FuzzWatchingCan, AFrameDuringAnLssBitTimingSwitchIsNoted) {
   EXPECT_EQ(can.problem(), "frame 701 [1] 7F sent during an LSS bit timing switch");
 }
 
+TEST(FuzzDeviceInvariant, TheJointsStatusWordMustShowItsState) {
+  port::RecordingCan can;
+  const std::unique_ptr<FuzzedDevice> device = createFuzzedDevice("mseries", can, {});
+  device->powerOn(0);
+  EXPECT_EQ(device->checkDevice(), "");  // 0x0404 under pulse control
+  od::ObjectDictionary& dictionary = device->node().dictionary();
+  dictionary.storeUnsigned(0x6041, 0, 0x0040);  // CiA 402's switch on disabled: bit 6
+  EXPECT_EQ(device->checkDevice(), "the status word sets bit 6, 7, 9 or 11");
+  dictionary.storeUnsigned(0x6041, 0, 0x1404);  // bit 12 in mode 0
+  EXPECT_EQ(device->checkDevice(), "the status word sets bit 12 or 13 outside homing");
+  dictionary.storeUnsigned(0x6041, 0, 0x0437);  // operation enabled: not the drive's state
+  EXPECT_EQ(device->checkDevice(), "the status word does not show the drive's state");
+  const std::unique_ptr<FuzzedDevice> example = createFuzzedDevice("example", can, {});
+  example->powerOn(0);
+  EXPECT_EQ(example->checkDevice(), "");  // a device without an invariant of its own
+}
+
 }  // namespace
 }  // namespace costa::fuzz

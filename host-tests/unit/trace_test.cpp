@@ -158,5 +158,21 @@ TEST(TraceWithProfile, SantengShortRequestsAndCountAlone) {
   EXPECT_EQ(cia301.describe(frame, 1), "SDO request (malformed, ignored)");
 }
 
+TEST(TraceWithProfile, HeartbeatByteWhileAnErrorIsActive) {
+  DeviceProfile profile;
+  profile.errorControl.heartbeatWhileError = 0x04;
+  FrameTracer tracer(nullptr, nullptr, profile);
+  const auto describe = [&tracer](const char* text) {
+    CanFrame frame;
+    std::string error;
+    EXPECT_TRUE(parseFrame(text, &frame, &error)) << error;
+    return tracer.describe(frame, 1);
+  };
+  EXPECT_EQ(describe("701 [1] 04"),
+            "heartbeat: an error is active (the device's byte; NMT state unchanged)");
+  EXPECT_EQ(describe("701 [1] 05"), "heartbeat operational");
+  EXPECT_EQ(describe("702 [1] 04"), "heartbeat stopped");  // another node: CiA 301
+}
+
 }  // namespace
 }  // namespace costa::host

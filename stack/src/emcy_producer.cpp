@@ -131,6 +131,9 @@ void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
 
 void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
                            const uint8_t* manufacturer) noexcept {
+  if (!profile_.sendFrames) {
+    return;  // a device without EMCY: the register and the history only
+  }
   if (pendingCount_ == pendingCapacity_) {
     ++lost_;
     return;

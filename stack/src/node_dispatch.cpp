@@ -127,7 +127,7 @@ Microseconds Node::runDue() noexcept {
   tx_.setGate(TransmitPath::kBitTiming, lss_.transmissionSuspended());
   const NmtState state = nmt_.state();
   if (state != NmtState::kInitialising) {
-    heartbeat_.process(at, nmt_.state());
+    heartbeat_.process(at, heartbeatState());
     errorControl_.process(at);
     SyncEvent sync;
     if (sync_.process(at, preOrOperational(), &sync)) {

@@ -38,6 +38,18 @@ void PdoEngine::bind() noexcept {
       tpdos_[tpdoCount_++].bind(index);
     }
   }
+  context_.tpdos = tpdos_;
+  if (context_.profile.tpdoAnswersRpdo) {
+    constexpr uint16_t kAnswerOffset = kTpdoCommunicationFirst - kRpdoCommunicationFirst;
+    for (size_t i = 0; i < rpdoCount_; ++i) {
+      const auto answer = static_cast<uint16_t>(rpdos_[i].communicationIndex() + kAnswerOffset);
+      for (size_t t = 0; t < tpdoCount_; ++t) {
+        if (tpdos_[t].communicationIndex() == answer) {
+          rpdos_[i].answerWith(t);
+        }
+      }
+    }
+  }
 }
 
 void PdoEngine::configure() noexcept {

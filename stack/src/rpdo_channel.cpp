@@ -4,6 +4,7 @@
 #include "costa/node_clock.hpp"
 #include "costa/node_events.hpp"
 #include "costa/od/bytes.hpp"
+#include "costa/tpdo_channel.hpp"
 
 namespace costa {
 
@@ -34,7 +35,13 @@ bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
 }
 
 void RpdoChannel::updateQuietDlc() noexcept {
-  quietDlc_ = tooShort_ || tooLong_ ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+  quietDlc_ = tooShort_ || tooLong_ || answer_ != 0U ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+}
+
+void RpdoChannel::withdrawAnswer(PdoContext& context) const noexcept {
+  if (answer_ != 0U) {
+    context.tpdos[answer_ - 1U].withdrawEvent();
+  }
 }
 
 void RpdoChannel::stop() noexcept {
@@ -63,6 +70,10 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
     context.emcy.clear(kEmcyLengthLong, source());
   }
   updateQuietDlc();
+  if (answer_ != 0U) {
+    // Taken: answered (withdrawn if an entry refuses).
+    context.tpdos[answer_ - 1U].signalEvent(context.clock);
+  }
   return true;
 }
 

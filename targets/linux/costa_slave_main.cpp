@@ -22,7 +22,11 @@ int main(int argc, char** argv) {
   }
   if (options.listDevices) {
     for (const DeviceEntry& entry : devices()) {
-      std::printf("%-10s %s\n", entry.name, entry.summary);
+      if (entry.alias != nullptr) {
+        std::printf("%-10s %s (also: %s)\n", entry.name, entry.summary, entry.alias);
+      } else {
+        std::printf("%-10s %s\n", entry.name, entry.summary);
+      }
     }
     return 0;
   }

@@ -6,6 +6,18 @@
 namespace costa::host {
 namespace {
 
+/// A composition's kAlias, or null when it declares none: the first overload when it does.
+struct NoAlias {};
+struct WithAlias : NoAlias {};
+template <typename Composition, typename = decltype(Composition::kAlias)>
+constexpr const char* aliasOf(WithAlias /*unused*/) {
+  return Composition::kAlias;
+}
+template <typename Composition>
+constexpr const char* aliasOf(NoAlias /*unused*/) {
+  return nullptr;
+}
+
 template <typename Composition>
 std::unique_ptr<DeviceTarget> build(CanTransmitter& can, const DeviceConfig& config,
                                     std::unique_ptr<port::FileStorage> storage) {
@@ -16,7 +28,8 @@ std::vector<DeviceEntry> listedDevices() {
   std::vector<DeviceEntry> table;
   devices::forEachDevice([&table](auto device) {
     using Composition = typename decltype(device)::Composition;
-    table.push_back(DeviceEntry{device.name, Composition::kSummary, Composition::settings().lss,
+    table.push_back(DeviceEntry{device.name, Composition::kSummary,
+                                aliasOf<Composition>(WithAlias{}), Composition::settings().lss,
                                 devices::highestNodeId<Composition>(), Composition::kStorageBytes,
                                 &build<Composition>});
   });
@@ -32,7 +45,7 @@ const std::vector<DeviceEntry>& devices() {
 
 const DeviceEntry* findDevice(const std::string& name) {
   for (const DeviceEntry& entry : devices()) {
-    if (name == entry.name) {
+    if (name == entry.name || (entry.alias != nullptr && name == entry.alias)) {
       return &entry;
     }
   }

@@ -15,6 +15,9 @@ namespace costa::host {
 struct DeviceEntry {
   const char* name;
   const char* summary;
+  /// Another name the device answers to (its composition's optional kAlias: a name that is
+  /// no C++ identifier, such as m-series), or null.
+  const char* alias;
   bool lss;               ///< it has LSS: it may start without a node-id (--node-id 255)
   uint8_t highestNodeId;  ///< it takes node-ids 1..highestNodeId (127 but for a few devices)
   size_t storageBytes;    ///< its non-volatile memory: the size of the --storage file
@@ -25,6 +28,7 @@ struct DeviceEntry {
 
 /// Every device, in the list's order.
 const std::vector<DeviceEntry>& devices();
+/// The device named `name`, by its name or its alias; null when none is.
 const DeviceEntry* findDevice(const std::string& name);
 /// "example, solo, ..." for messages.
 std::string deviceNames();

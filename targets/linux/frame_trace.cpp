@@ -133,7 +133,7 @@ std::string FrameTracer::describe(const CanFrame& frame, uint8_t localNodeId) {
     return describeSdoRequest(frame, id - 0x600U == localNodeId);
   }
   if (id > 0x700 && id <= 0x77F) {
-    return describeErrorControl(frame);
+    return describeErrorControl(frame, id - 0x700U == localNodeId);
   }
   if (id == 0x7E5 || id == 0x7E4) {
     return describeLss(frame, id == 0x7E5);
@@ -182,7 +182,7 @@ std::string FrameTracer::describeEmcy(const CanFrame& frame, bool local) const {
   return text;
 }
 
-std::string FrameTracer::describeErrorControl(const CanFrame& frame) {
+std::string FrameTracer::describeErrorControl(const CanFrame& frame, bool local) {
   const uint32_t node = frame.id - 0x700U;
   if (frame.rtr) {
     guardRequested_[node] = 1;
@@ -198,6 +198,10 @@ std::string FrameTracer::describeErrorControl(const CanFrame& frame) {
   }
   if (frame.data[0] == 0U) {
     return "boot-up";
+  }
+  const uint8_t whileError = profile_.errorControl.heartbeatWhileError;
+  if (local && whileError != 0U && frame.data[0] == whileError) {
+    return "heartbeat: an error is active (the device's byte; NMT state unchanged)";
   }
   return std::string("heartbeat ") + stateName(frame.data[0]);
 }

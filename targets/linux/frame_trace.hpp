@@ -32,7 +32,7 @@ class FrameTracer {
  private:
   std::string describeNmt(const CanFrame& frame) const;
   std::string describeEmcy(const CanFrame& frame, bool local) const;
-  std::string describeErrorControl(const CanFrame& frame);
+  std::string describeErrorControl(const CanFrame& frame, bool local);
   std::string describeSdoRequest(const CanFrame& frame, bool local);
   /// An SDO request's 8 bytes (a short one's completed with zeros).
   std::string describeSdoRequestData(const uint8_t* d, bool local);

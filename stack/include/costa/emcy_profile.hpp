@@ -21,6 +21,10 @@ struct EmcyProfile {
   /// The error register 0x1001 (and the EMCY's register byte) reflects the active errors. When
   /// false both always read 0 (a device that does not implement the register).
   bool reportErrorRegister = true;
+  /// The device sends EMCY frames (CiA 301). When false (a device without an EMCY producer),
+  /// error conditions and events still set the error register 0x1001 and the history 0x1003,
+  /// and nothing is sent.
+  bool sendFrames = true;
 };
 
 }  // namespace costa

@@ -16,6 +16,13 @@ struct ErrorControlProfile {
   /// The node reports life-guarding and heartbeat-consumer errors with EMCY 0x8130 itself; when
   /// false only the listeners hear of them and the device reports them its own way.
   bool emcyForErrors = true;
+  /// The error behaviour (0x1029:01's values) of a device without object 0x1029: CiA 301's
+  /// default 0 (operational -> pre-operational on a communication error); 1 keeps the NMT state.
+  uint8_t errorBehaviourWithoutObject = 0;
+  /// What a heartbeat carries while the error register (0x1001) is not 0: 0 (CiA 301) the NMT
+  /// state as always; otherwise this byte (a device that shows an alarm in its heartbeat), the
+  /// NMT state itself unchanged.
+  uint8_t heartbeatWhileError = 0;
 };
 
 }  // namespace costa

@@ -202,6 +202,12 @@ class Node {
   /// A frame without a route: error control (other nodes' heartbeats, guarding requests).
   bool errorControlFrame(const CanFrame& frame) noexcept;
   void handleSync(const SyncEvent& sync) noexcept;
+  /// What the heartbeat shows: the NMT state, or the profile's byte while an error is active.
+  NmtState heartbeatState() const noexcept {
+    const uint8_t whileError = settings_.profile.errorControl.heartbeatWhileError;
+    return whileError != 0U && emcy_.errorRegister() != 0U ? static_cast<NmtState>(whileError)
+                                                           : nmt_.state();
+  }
   bool preOrOperational() const noexcept {
     return nmt_.state() == NmtState::kPreOperational || nmt_.state() == NmtState::kOperational;
   }

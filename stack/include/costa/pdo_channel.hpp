@@ -16,6 +16,7 @@ namespace costa {
 class EmcyProducer;
 class FrameRouter;
 class NodeListeners;
+class TpdoChannel;
 
 /// A device's fixed mapping for a PDO that has no mapping object in its dictionary.
 struct StaticPdoMapping {
@@ -39,6 +40,8 @@ struct PdoContext {
   NodeClock& clock;
   StaticPdoMappings staticMappings;
   FrameRouter& routes;  ///< told when a PDO's CAN-ID or validity changes
+  /// The TPDO channels (set by PdoEngine::bind()): an RPDO's answering TPDO is one of them.
+  TpdoChannel* tpdos = nullptr;
 };
 
 /// A decoded PDO COB-ID (sub-index 1 of a communication parameter).

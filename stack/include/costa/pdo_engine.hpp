@@ -57,6 +57,7 @@ class PdoEngine : public ObjectHook {
     }
     if (!rpdo.onFrame(context_, frame, now)) {
       ++rpdosRefused_;
+      rpdo.withdrawAnswer(context_);
     }
     holding_ = holding_ || rpdo.holding();
     return true;

@@ -50,6 +50,11 @@ struct PdoProfile {
   /// Event-driven TPDOs (254/255) are sent once when the node enters OPERATIONAL. CiA 301 does
   /// not ask for it (events and the event timer trigger them), so the default is off.
   bool tpdoOnEnteringOperational = false;
+  /// Every RPDO n the node accepts (of the right length, every entry written or, for a
+  /// synchronous RPDO, held for the SYNC) is answered by the event-driven TPDO n (0x1800 + n-1
+  /// for 0x1400 + n-1), at reception: a device whose TPDOs reply to its RPDOs. CiA 301 has
+  /// no such link.
+  bool tpdoAnswersRpdo = false;
 };
 
 }  // namespace costa

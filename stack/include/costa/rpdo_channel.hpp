@@ -28,6 +28,9 @@ class RpdoChannel {
   static constexpr uint16_t kEmcyTimeout = 0x8250;      ///< RPDO deadline (event timer) missed
 
   void bind(uint16_t communicationIndex) noexcept { index_ = communicationIndex; }
+  /// The TPDO (its channel in PdoContext::tpdos) that answers each PDO this channel accepts
+  /// (PdoProfile::tpdoAnswersRpdo). Set once, before configure().
+  void answerWith(size_t tpdoChannel) noexcept { answer_ = static_cast<uint8_t>(tpdoChannel + 1U); }
   uint16_t communicationIndex() const noexcept { return index_; }
 
   /// Reads the communication parameters and resolves the mapping; drops held data. False when
@@ -67,6 +70,9 @@ class RpdoChannel {
     }
     return true;
   }
+  /// An answer signalled for a PDO that an entry then refused is taken back (the refusal is
+  /// rare and cold; the answer is signalled before the entries are written, see checkLength()).
+  void withdrawAnswer(PdoContext& context) const noexcept;
   /// Applies the data held since the previous SYNC. False when an entry was refused.
   bool onSync(PdoContext& context) noexcept;
   bool holding() const noexcept { return holding_; }
@@ -100,7 +106,8 @@ class RpdoChannel {
   void restartDeadline(PdoContext& context, Microseconds now) noexcept;
   void updateQuietDlc() noexcept;
   /// Raises or clears EMCY 0x8210/0x8220 for a frame of `dlc` bytes; looks nothing up while
-  /// the length stays right. False for a frame too short to apply.
+  /// the length stays right. False for a frame too short to apply. A frame that will be taken
+  /// signals the answering TPDO (all frames come here when there is one: quietDlc_).
   bool checkLength(PdoContext& context, uint8_t dlc) noexcept;
   uint8_t source() const noexcept { return static_cast<uint8_t>(index_ & 0xFFU); }
 
@@ -113,9 +120,12 @@ class RpdoChannel {
   bool timedOut_ = false;
   bool tooShort_ = false;  ///< EMCY 0x8210 raised
   bool tooLong_ = false;   ///< EMCY 0x8220 raised
-  /// The DLC for which checkLength() has nothing to do: the mapped bytes while neither length
-  /// EMCY is raised, else none (0xFF).
+  /// The DLC for which onFrame() takes the quiet path: the mapped bytes while neither length
+  /// EMCY is raised and no TPDO answers, else none (0xFF).
   uint8_t quietDlc_ = 0;
+  /// The TPDO that answers every PDO taken (PdoProfile::tpdoAnswersRpdo): its channel in
+  /// PdoContext::tpdos plus 1, or 0 for none (a byte, so that the channel keeps its size).
+  uint8_t answer_ = 0;
   Microseconds deadline_ = kNever;
   PdoMap map_;
   uint8_t held_[PdoMap::kMaxBytes] = {};

@@ -58,6 +58,8 @@ class TpdoChannel {
   void onRemoteRequest(PdoContext& context, Microseconds now) noexcept;
   /// The application changed mapped data (or asks for a transmission): an event.
   void signalEvent(NodeClock& clock) noexcept;
+  /// Takes back an event signalled in the same moment (an answered RPDO that was refused).
+  void withdrawEvent() noexcept { event_ = false; }
   bool maps(const od::EntryRef& ref) const noexcept { return map_.contains(ref); }
 
   /// Event-driven transmission: events and the event timer, within the inhibit time.

@@ -1,0 +1,184 @@
+#include "costa/cia402/drive.hpp"
+
+#include "costa/od/little_endian.hpp"
+
+namespace costa::cia402 {
+
+Drive::Drive(Node& node, Axis& axis, const DriveOptions& options) noexcept
+    : node_(node),
+      axis_(axis),
+      options_(options),
+      attached_(node.attachHook(object::kControlword, object::kControlword, *this) &&
+                node.attachHook(object::kModes, object::kModes, *this) &&
+                node.attachHook(object::kTargetPosition, object::kTargetPosition, *this) &&
+                node.addListener(*this)) {}
+
+int64_t Drive::read(uint16_t index, uint8_t subIndex, int64_t fallback) const noexcept {
+  return static_cast<int64_t>(
+      node_.dictionary().readUnsigned(index, subIndex, static_cast<uint64_t>(fallback)));
+}
+
+bool Drive::supported(int8_t mode) const noexcept {
+  return (static_cast<uint32_t>(read(object::kSupportedModes, 0, 0)) & modeBit(mode)) != 0U;
+}
+
+AbortCode Drive::check(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                       const uint8_t* data, size_t length) noexcept {
+  const AbortCode checked = dictionary.check(ref, data, length);
+  if (checked != AbortCode::kNone || ref.index() != object::kModes) {
+    return checked;
+  }
+  const auto mode = static_cast<int8_t>(data[0]);
+  return mode == kNoMode || supported(mode) ? AbortCode::kNone : AbortCode::kInvalidValue;
+}
+
+AbortCode Drive::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                       const uint8_t* data, size_t length) noexcept {
+  const AbortCode checked = check(dictionary, ref, data, length);
+  if (checked != AbortCode::kNone) {
+    return checked;
+  }
+  const AbortCode written = dictionary.write(ref, data, length);
+  if (written != AbortCode::kNone) {
+    return written;
+  }
+  if (ref.index() == object::kModes) {
+    modeWritten_ = true;
+  } else if (ref.index() == object::kTargetPosition) {
+    targetWritten_ = true;
+  }
+  if (!deferring_) {
+    evaluate();
+  }
+  return AbortCode::kNone;
+}
+
+void Drive::onResetApplication() noexcept {
+  state_ = PowerState::kNotReadyToSwitchOn;
+  lastControlword_ = 0;
+  statusword_ = 0;
+  mode_ = kNoMode;
+  shownMode_ = kNoMode;
+  changeMode(kNoMode);
+  deferring_ = false;
+  targetWritten_ = false;
+  modeWritten_ = false;
+  hold_ = false;
+  commanded_ = AxisCommand{};
+  axis_.command(commanded_);  // no torque until the control word asks for it
+}
+
+void Drive::onRpdoWriting(uint16_t communicationIndex) noexcept {
+  (void)communicationIndex;
+  deferring_ = true;
+}
+
+void Drive::onRpdoReceived(uint16_t communicationIndex) noexcept {
+  (void)communicationIndex;
+  deferring_ = false;
+  evaluate();
+}
+
+void Drive::onSync(uint8_t counter) noexcept {
+  (void)counter;
+  const auto controlword = static_cast<uint16_t>(read(object::kControlword, 0, 0));
+  if (state_ == PowerState::kOperationEnabled && mode_ == kInterpolatedPosition &&
+      (options_.ipWithoutEnableBit || (controlword & control::kNewSetPoint) != 0U)) {
+    ipTarget_ = static_cast<int32_t>(
+        read(options_.ipSetPointIndex, options_.ipSetPointSubIndex, ipTarget_));
+    ipTaken_ = true;
+    evaluate();
+  }
+}
+
+void Drive::hold(bool on) noexcept {
+  if (hold_ != on) {
+    hold_ = on;
+    evaluate();
+  }
+}
+
+void Drive::enter(PowerState state) noexcept {
+  if (state == PowerState::kOperationEnabled) {
+    setPointTaken_ = false;
+    moving_ = false;
+    pending_ = false;
+    ipTaken_ = false;
+  } else if (state == PowerState::kFaultReactionActive || state == PowerState::kFault) {
+    homingRunning_ = false;
+  }
+  state_ = state;
+}
+
+void Drive::changeMode(int8_t mode) noexcept {
+  mode_ = mode;
+  setPointTaken_ = false;
+  moving_ = false;
+  pending_ = false;
+  acknowledged_ = false;
+  homingRunning_ = false;
+  homingResult_ = HomingState::kIdle;
+  ipTaken_ = false;
+}
+
+void Drive::runStateMachine(uint16_t controlword, AxisState* axis) noexcept {
+  PowerInputs inputs;
+  inputs.faultReset =
+      (controlword & control::kFaultReset) != 0U && (lastControlword_ & control::kFaultReset) == 0U;
+  if (inputs.faultReset && state_ == PowerState::kFault) {
+    axis_.resetFault();
+    *axis = axis_.state();
+  }
+  inputs.fault = axis->fault;
+  inputs.stopped = axis->atRest;
+  // Automatic transitions follow at once (1 after 0; 12 and 14 when already at rest).
+  for (int step = 0; step < 4; ++step) {
+    const PowerTransition next = nextPowerState(state_, controlword, inputs, options_.power);
+    if (next.number == kNoTransition) {
+      break;
+    }
+    enter(next.state);
+    inputs.faultReset = false;
+  }
+}
+
+void Drive::evaluate() noexcept {
+  od::ObjectDictionary& dictionary = node_.dictionary();
+  auto controlword = static_cast<uint16_t>(read(object::kControlword, 0, 0));
+  AxisState axis = axis_.state();
+  runStateMachine(controlword, &axis);
+  const auto requested = static_cast<int8_t>(read(object::kModes, 0, kNoMode));
+  if (requested != mode_ && requested != kNoMode && supported(requested)) {
+    changeMode(requested);  // 0: no mode change (CiA 402)
+  }
+  complete(axis);
+  controlword = takeEvents(controlword, axis);
+  const AxisCommand next = motion(controlword);
+  if (next != commanded_ || homingRestart_) {
+    commanded_ = next;
+    homingRestart_ = false;
+    axis_.command(next);
+    axis = axis_.state();
+  }
+  complete(axis);  // a set-point already reached ends at once
+  lastControlword_ = controlword;
+  const uint16_t status = statusOf(controlword, axis);
+  dictionary.storeUnsigned(object::kModesDisplay, 0, static_cast<uint64_t>(mode_));
+  dictionary.storeUnsigned(object::kPositionActual, 0, static_cast<uint64_t>(axis.position));
+  dictionary.storeUnsigned(object::kVelocityActual, 0, static_cast<uint64_t>(axis.velocity));
+  dictionary.storeUnsigned(object::kStatusword, 0, status);
+  if (status != statusword_ || mode_ != shownMode_) {
+    const bool modeChanged = mode_ != shownMode_;
+    const bool statusChanged = status != statusword_;
+    statusword_ = status;
+    shownMode_ = mode_;
+    if (options_.statusChangesAreEvents && statusChanged) {
+      node_.markChanged(object::kStatusword, 0);
+    }
+    if (options_.statusChangesAreEvents && modeChanged) {
+      node_.markChanged(object::kModesDisplay, 0);
+    }
+  }
+}
+
+}  // namespace costa::cia402
