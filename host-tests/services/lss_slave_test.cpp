@@ -121,6 +121,24 @@ TEST_F(LssSlaveTest, ActivateBitTimingSwitchesAfterOneDelayAndResumesAfterTheSec
   EXPECT_EQ(sent(), frames({answer({0x5E, kNodeId})}));
 }
 
+// The switch comes before the clock wraps, the resume after it (kStart is 1 s before the wrap).
+TEST_F(LssSlaveTest, ActivateBitTimingAcrossTheClocksWrap) {
+  configuration();
+  request({lss::kConfigureBitTiming, 0, 2});
+  (void)sent();
+  request({lss::kActivateBitTiming, 0x58, 0x02});  // 600 ms; request() checks valid()
+  EXPECT_EQ(lss_.nextDeadline(), afterMs(600));
+  lss_.process(afterMs(600));
+  EXPECT_EQ(host_.activations, 1);
+  EXPECT_TRUE(lss_.valid());
+  EXPECT_EQ(lss_.nextDeadline(), afterMs(1200));  // past the wrap
+  lss_.process(afterMs(1200) - 1U);
+  EXPECT_TRUE(lss_.transmissionSuspended());
+  lss_.process(afterMs(1200));
+  EXPECT_FALSE(lss_.transmissionSuspended());
+  EXPECT_TRUE(lss_.valid());
+}
+
 TEST_F(LssSlaveTest, StoreConfigurationAnswersWithTheHostsResult) {
   configuration();
   request({lss::kConfigureNodeId, 0x22});

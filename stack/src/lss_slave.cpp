@@ -53,7 +53,8 @@ bool LssSlave::valid() const noexcept {
   }
   switch (switchPhase_) {
     case SwitchPhase::kIdle: return true;
-    case SwitchPhase::kBeforeSwitch: return switchAt_ != kNever && switchAt_ <= resumeAt_;
+    case SwitchPhase::kBeforeSwitch:  // the resume is one delay after the switch (and may wrap)
+      return switchAt_ != kNever && resumeAt_ != kNever && !before(resumeAt_, switchAt_);
     case SwitchPhase::kAfterSwitch: return resumeAt_ != kNever;
   }
   return false;
