@@ -26,8 +26,7 @@ class DictionaryNodeBus : public TranscriptBus {
     if (events != nullptr) {
       EXPECT_TRUE(node_.addListener(*events));
     }
-    node_.start(clock_.now());
-    runProcess();
+    powerOn();
   }
 
   void send(const CanFrame& frame) override {
@@ -53,13 +52,28 @@ class DictionaryNodeBus : public TranscriptBus {
     return "a dictionary node has no simulation (" + command + ")";
   }
 
-  Node& node() { return node_; }
+  NodeInstance<Values, Capacity>& node() { return node_; }
 
- private:
+ protected:
+  struct PowerOnLater {};
+  /// For a derived bus that attaches its own behaviour first, then calls powerOn().
+  DictionaryNodeBus(const od::Definition& definition, const NodeSettings& settings,
+                    PowerOnLater /*unused*/)
+      : node_(definition, can_, settings) {}
+
+  /// Starts the node at InProcessBus::powerOnTime() and runs what follows.
+  void powerOn() {
+    NoAllocationScope scope;
+    node_.start(clock_.now());
+    runProcess();
+  }
+
   /// Runs process() now, and again while it asks for an immediate call.
   void runProcess() {
     expectOk(clock_.runProcess([this](Microseconds now) { return node_.process(now); }));
   }
+
+ private:
   void expectOk(replay::VirtualClock::Outcome outcome) {
     EXPECT_EQ(outcome, replay::VirtualClock::Outcome::kOk)
         << "process() asked for " << clock_.failedDeadline() << " us at " << clock_.now() << " us";

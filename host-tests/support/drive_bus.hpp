@@ -10,11 +10,7 @@
 #include "allocation_guard.hpp"
 #include "cia402_drive_od.hpp"
 #include "costa/cia402/drive.hpp"
-#include "costa/node.hpp"
-#include "costa/port/memory/recording_can.hpp"
-#include "in_process_bus.hpp"
-#include "transcript_player.hpp"
-#include "virtual_clock.hpp"
+#include "dictionary_node_bus.hpp"
 
 namespace costa::test {
 
@@ -49,40 +45,20 @@ class ScriptedAxis : public cia402::Axis {
   bool faultStays = false;  ///< a fault reset does not clear the fault
 };
 
-class DriveBus : public TranscriptBus {
+class DriveBus : public DictionaryNodeBus<gen::cia402_drive::Values, gen::cia402_drive::Capacity> {
  public:
-  using Dictionary = NodeInstance<gen::cia402_drive::Values, gen::cia402_drive::Capacity>;
+  using Base = DictionaryNodeBus<gen::cia402_drive::Values, gen::cia402_drive::Capacity>;
 
   /// A node with the drive (attached before the power-on), powered on at
   /// InProcessBus::powerOnTime(); the drive has run once.
   explicit DriveBus(const cia402::DriveOptions& options = cia402::DriveOptions{})
-      : node_(gen::cia402_drive::kDefinition, can_, NodeSettings{}), drive_(node_, axis_, options) {
-    NoAllocationScope scope;
+      : Base(gen::cia402_drive::kDefinition, NodeSettings{}, PowerOnLater{}),
+        drive_(node(), axis_, options) {
     EXPECT_TRUE(drive_.attached());
-    node_.start(clock_.now());
-    drive_.update();
-    runProcess();
+    powerOn();
+    axisMoved();
   }
 
-  void send(const CanFrame& frame) override {
-    NoAllocationScope scope;
-    node_.onFrame(frame, clock_.now());
-    runProcess();
-  }
-  bool receive(CanFrame* frame, int timeoutMs) override {
-    (void)timeoutMs;
-    if (cursor_ == can_.count()) {
-      return false;
-    }
-    *frame = can_.at(cursor_++);
-    return true;
-  }
-  void wait(uint64_t milliseconds) override {
-    NoAllocationScope scope;
-    expectOk(clock_.advance(static_cast<Microseconds>(milliseconds * 1000U),
-                            [this](Microseconds now) { return node_.process(now); }));
-  }
-  bool checksTiming() const override { return true; }
   std::string simulate(const std::string& command) override {
     return "the drive bus has no simulation (" + command + ")";
   }
@@ -95,25 +71,12 @@ class DriveBus : public TranscriptBus {
     runProcess();
   }
 
-  Dictionary& node() { return node_; }
   cia402::Drive& drive() { return drive_; }
   ScriptedAxis& axis() { return axis_; }
 
  private:
-  void runProcess() {
-    expectOk(clock_.runProcess([this](Microseconds now) { return node_.process(now); }));
-  }
-  void expectOk(replay::VirtualClock::Outcome outcome) {
-    EXPECT_EQ(outcome, replay::VirtualClock::Outcome::kOk)
-        << "process() asked for " << clock_.failedDeadline() << " us at " << clock_.now() << " us";
-  }
-
-  port::RecordingCan can_;
   ScriptedAxis axis_;
-  Dictionary node_;
   cia402::Drive drive_;
-  replay::VirtualClock clock_{InProcessBus::powerOnTime()};
-  size_t cursor_ = 0;
 };
 
 }  // namespace costa::test
