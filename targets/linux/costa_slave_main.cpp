@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "device_eds.hpp"
+#include "device_listing.hpp"
 #include "device_registry.hpp"
 #include "slave_options.hpp"
 #include "slave_runner.hpp"
@@ -21,14 +23,12 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (options.listDevices) {
-    for (const DeviceEntry& entry : devices()) {
-      if (entry.alias != nullptr) {
-        std::printf("%-10s %s (also: %s)\n", entry.name, entry.summary, entry.alias);
-      } else {
-        std::printf("%-10s %s\n", entry.name, entry.summary);
-      }
-    }
+    std::fputs(describeDevices().c_str(), stdout);
     return 0;
+  }
+  if (!options.edsDevice.empty()) {
+    const std::string_view eds = deviceEds(findDevice(options.edsDevice)->name);
+    return std::fwrite(eds.data(), 1, eds.size(), stdout) == eds.size() ? 0 : 1;
   }
   return runSlave(options);
 }

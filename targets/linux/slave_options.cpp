@@ -49,6 +49,9 @@ std::string* textOption(const std::string& argument, SlaveOptions& options) {
   if (argument == "--control") {
     return &options.controlPath;
   }
+  if (argument == "--eds") {
+    return &options.edsDevice;
+  }
   return nullptr;
 }
 
@@ -85,7 +88,8 @@ std::string slaveUsage() {
          "  --trace          print every frame received and sent, with its meaning\n"
          "  --control PATH   accept simulation commands (for example 'angle 90' for gra/grn) as\n"
          "                   datagrams on a UNIX socket at PATH; each gets 'ok' or 'error: ...'\n"
-         "  --list-devices   list the devices and exit\n"
+         "  --list-devices   list the devices with their identity (0x1018) and exit\n"
+         "  --eds DEVICE     print the EDS the device was built from, byte for byte, and exit\n"
          "  --help           show this help and exit\n"
          "\n"
          "DEVICE is one of: " +
@@ -130,7 +134,17 @@ bool parseSlaveOptions(const std::vector<std::string>& arguments, SlaveOptions* 
       return false;
     }
   }
-  return options->help || options->listDevices || checkDevice(*options, error);
+  if (options->help || options->listDevices) {
+    return true;
+  }
+  if (!options->edsDevice.empty()) {
+    if (findDevice(options->edsDevice) == nullptr) {
+      *error = "unknown device '" + options->edsDevice + "' (one of: " + deviceNames() + ")";
+      return false;
+    }
+    return true;
+  }
+  return checkDevice(*options, error);
 }
 
 }  // namespace costa::host

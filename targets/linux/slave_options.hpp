@@ -15,6 +15,7 @@ struct SlaveOptions {
   bool trace = false;
   bool help = false;
   bool listDevices = false;
+  std::string edsDevice;  ///< --eds DEVICE: print that device's EDS and exit
   std::string device;
 };
 

@@ -52,7 +52,8 @@ function(costa_add_device name)
     endif()
   endforeach()
   list(REMOVE_DUPLICATES missing)
-  set_target_properties(${device} PROPERTIES COSTA_MISSING_FEATURES "${missing}")
+  set_target_properties(${device} PROPERTIES COSTA_MISSING_FEATURES "${missing}"
+                                             COSTA_DICTIONARY ${ARG_DICTIONARY})
   foreach(library IN LISTS ARG_LIBRARIES)
     target_include_directories(costa_device_headers INTERFACE
                                $<TARGET_PROPERTY:${library},INTERFACE_INCLUDE_DIRECTORIES>)
