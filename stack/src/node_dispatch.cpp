@@ -32,6 +32,31 @@ void Node::buildRoutes() noexcept {
   }
 }
 
+size_t Node::receiveFilters(CanIdFilter* filters, size_t capacity) noexcept {
+  if (router_.stale()) {
+    buildRoutes();
+  }
+  size_t count = 0;
+  auto add = [&](CanIdFilter filter) {
+    if (count < capacity) {
+      filters[count] = filter;
+    }
+    ++count;
+  };
+  for (size_t i = 0; i < router_.size(); ++i) {
+    const uint16_t id = router_.at(i).id;
+    if (i == 0U || router_.at(i - 1U).id != id) {  // sorted: a shared CAN-ID once
+      add(CanIdFilter{id, CanIdFilter::kExact});
+    }
+  }
+  // The error control range that errorControlFrame() takes.
+  if ((features::kHeartbeatConsumer || features::kNodeGuarding) &&
+      nmt_.nodeId() != cob::kLssUnconfigured) {
+    add(CanIdFilter{static_cast<uint16_t>(cob::kErrorControlBase), 0x780});
+  }
+  return count;
+}
+
 COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame) noexcept {
   switch (entry.route) {
     case Route::kNmt: return nmt_.onCommand(frame);

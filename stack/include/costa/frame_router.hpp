@@ -68,9 +68,17 @@ class FrameRouter {
   /// Some CAN-ID has more than one route.
   bool shared() const noexcept { return shared_; }
   /// The node's CAN-IDs changed: rebuild before the next lookup.
-  void invalidate() noexcept { stale_ = true; }
+  void invalidate() noexcept {
+    stale_ = true;
+    ++changes_;
+  }
+  /// How many times the CAN-IDs changed (invalidate()): a port compares it with the value it
+  /// saw when it programmed its acceptance filters.
+  uint32_t changes() const noexcept { return changes_; }
   bool stale() const noexcept { return stale_; }
   size_t size() const noexcept { return count_; }
+  /// The route at `index` (< size()), in CAN-ID order.
+  const RouteEntry& at(size_t index) const noexcept { return slots_[index]; }
 
  private:
   static constexpr size_t kFunctionCodes = 16;
@@ -80,6 +88,7 @@ class FrameRouter {
   size_t count_ = 0;
   /// first_[c]: the index of the first route of function code c; first_[16] = count_.
   uint8_t first_[kFunctionCodes + 1U] = {};
+  uint32_t changes_ = 0;
   bool stale_ = true;
   bool shared_ = false;  ///< some CAN-ID has more than one route
 };

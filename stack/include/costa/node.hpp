@@ -46,6 +46,7 @@
 #include "costa/od/object_dictionary.hpp"
 #include "costa/pdo_engine.hpp"
 #include "costa/port/can_controller_event.hpp"
+#include "costa/port/can_id_filter.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/sdo_server.hpp"
 #include "costa/service_objects.hpp"
@@ -106,6 +107,22 @@ class Node {
   /// EMCY frames dropped because the EMCY queue (NodeMemory::emcyQueueCapacity frames waiting
   /// for their inhibit time) was full.
   uint32_t emcyLost() const noexcept { return emcy_.lost(); }
+
+  // --- Acceptance filters --------------------------------------------------------------------
+  /// The CAN-IDs the node listens to now, as acceptance filters for the controller's banks:
+  /// one exact filter per CAN-ID of a service (NMT, SYNC, its SDO server, each valid RPDO, each
+  /// valid TPDO's remote request, LSS), in CAN-ID order, then 0x700/0x780 for the error control
+  /// frames (other nodes' heartbeats, node guarding requests) once the node has a node-id, in a
+  /// build with the heartbeat consumer or node guarding. Every
+  /// frame the node uses passes; a few it does not use may (the rest of 0x700..0x77F). Writes at
+  /// most `capacity` and returns how many filters there are: more than `capacity` means the
+  /// controller must accept every standard frame. The node takes only standard frames. Call it
+  /// from the context that runs the node, when receiveFiltersVersion() changed. O(routes).
+  size_t receiveFilters(CanIdFilter* filters, size_t capacity) noexcept;
+  /// Changes whenever receiveFilters() may answer differently: reset communication, a node-id
+  /// given by LSS, a PDO's or SYNC's COB-ID written. A port keeps the value it programmed its
+  /// filters for and compares it after each onFrame() and process(). O(1).
+  uint32_t receiveFiltersVersion() const noexcept { return router_.changes(); }
 
   // --- NMT ------------------------------------------------------------------------------------
   /// Local NMT control (not into or out of initialising; the resets below are the way there).
