@@ -2,15 +2,17 @@
 //
 // Transmission: the three transmit mailboxes, sent in the order they were requested (TXFP), so
 // frames leave in the node's queue order. Reception: every frame (standard and extended, data
-// and remote) through filter bank 0 into FIFO 0. Status: error passive, bus-off and FIFO overrun
-// are reported as CanControllerEvent values for Node::onControllerEvent(). Bus-off recovery is
-// automatic (ABOM); the controller retransmits until a frame is acknowledged.
+// and remote) through filter bank 0 into FIFO 0, or once setFilters() has programmed them, the
+// frames the node listens to (its acceptance filters). Status: error passive, bus-off and FIFO
+// overrun are reported as CanControllerEvent values for Node::onControllerEvent(). Bus-off recovery
+// is automatic (ABOM); the controller retransmits until a frame is acknowledged.
 //
-// Context: every member function is for the one context that runs the node (the main loop).
-// None may be called from an interrupt handler, and none may run while another is running:
-// they share the receive FIFO register (RF0R) and the driver's record of the error state. The
-// driver enables no interrupt; an integrator who wants to sleep until the bus is active may
-// enable one in CAN_IER after start() and only wake the main loop from the handler.
+// Context: every member function is for the one context that runs the node (the main loop),
+// with one exception: receive() may instead run in the FIFO 0 interrupt handler (FMPIE0 in
+// CAN_IER), pushing into a CanFrameRing that the main loop empties, as long as nothing else
+// calls receive(). receive() and poll() may then interrupt each other: each writes RF0R only
+// with the one write-1 bit it acts on (RFOM0, FOVR0), and the other bits ignore a 0. Apart from
+// that, no member may run while another is running. The driver enables no interrupt itself.
 #pragma once
 
 #include <stddef.h>
@@ -18,6 +20,7 @@
 
 #include "costa/port/can_bit_rate.hpp"
 #include "costa/port/can_controller_event.hpp"
+#include "costa/port/can_id_filter.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/port/stm32/bxcan_registers.hpp"
 
@@ -79,6 +82,17 @@ class BxCanPort final : public CanTransmitter, public CanBitRateControl {
   /// withdrawn). Filters, MCR and the remembered error state are kept.
   bool setBitRate(uint32_t bitsPerSecond) noexcept override;
 
+  /// Programs acceptance filters (Node::receiveFilters()) into CAN1's filter banks, those below
+  /// CAN2SB (FMR; 14 after reset): two filters per bank in 16-bit mask mode, each taking the
+  /// standard data and remote frames whose identifier agrees with its own in the mask's bits,
+  /// into FIFO 0; extended frames pass none. An odd last filter fills both halves of its bank.
+  /// Banks beyond those used are deactivated; CAN2's banks are left as they are. With more
+  /// filters than 2 x banks (28 after reset) it accepts every frame, as start() does, and
+  /// returns false; true when the banks hold exactly `filters`. Reception pauses while the
+  /// banks are written (FINIT). Call it after start(), from the node's context, whenever
+  /// Node::receiveFiltersVersion() changed.
+  bool setFilters(const CanIdFilter* filters, size_t count) noexcept;
+
   /// Hands `frame` to a free transmit mailbox and requests its transmission. False, touching
   /// nothing, when all three mailboxes are pending. A DLC above 8 is sent as 8.
   bool tryTransmit(const CanFrame& frame) noexcept override;
@@ -99,6 +113,8 @@ class BxCanPort final : public CanTransmitter, public CanBitRateControl {
  private:
   bool waitForStatus(uint32_t mask, uint32_t expected) noexcept;
   void acceptEverythingIntoFifo0() noexcept;
+  /// The banks of CAN1 (below CAN2SB) as a bit mask.
+  uint32_t ownBanks() const noexcept;
 
   BxCanRegisters& registers_;
   uint32_t waitLimit_;
