@@ -121,5 +121,16 @@ TEST_F(BxCanFilters, ExtendedFramesPassNoFilter) {
   EXPECT_TRUE(banksPass(sim_.registers, 0x7FF, false));
 }
 
+TEST_F(BxCanFilters, AcceptAllFramesUndoesTheFilters) {
+  const CanIdFilter some[] = {{1, 0x7FF}, {2, 0x7FF}, {3, 0x7FF}};
+  ASSERT_TRUE(port_.setFilters(some, 3));
+  port_.acceptAllFrames();
+  EXPECT_EQ(sim_.registers.fa1r & 0x3FFFU, 1U);
+  EXPECT_EQ(sim_.registers.fs1r & 1U, 1U);  // bank 0: one 32-bit filter, mask 0
+  EXPECT_EQ(sim_.registers.filter[0].fr2, 0U);
+  EXPECT_TRUE(banksPass(sim_.registers, 0x5FF, true));
+  EXPECT_EQ(sim_.registers.fmr & fmr::kFinit, 0U);
+}
+
 }  // namespace
 }  // namespace costa::test

@@ -29,6 +29,34 @@ costa::DeviceConfig config() noexcept {
 
 costa::example::ExampleTarget target(can, config());  // node-id 1, no storage
 
+/// Programs CAN1's filter banks with what the node listens to, when that changed (at start-up,
+/// reset communication, a PDO's COB-ID written): frames for other nodes never reach the FIFO.
+class AcceptanceFilters {
+ public:
+  void update(costa::Node& node) noexcept {
+    const uint32_t version = node.receiveFiltersVersion();
+    if (programmed_ && version == version_) {
+      return;
+    }
+    const size_t count = node.receiveFilters(filters_, kCapacity);
+    if (count <= kCapacity) {
+      (void)can.setFilters(filters_, count);  // false: more than the banks hold, all accepted
+    } else {
+      can.acceptAllFrames();  // correct, only less selective
+    }
+    version_ = version;
+    programmed_ = true;
+  }
+
+ private:
+  static constexpr size_t kCapacity = 28;  // 14 banks of CAN1, two filters each
+  costa::CanIdFilter filters_[kCapacity] = {};
+  uint32_t version_ = 0;
+  bool programmed_ = false;
+};
+
+AcceptanceFilters filters;
+
 [[noreturn]] void halt() {
   for (;;) {
   }
@@ -47,6 +75,7 @@ int main() {
   }
   // The node takes the low 32 bits of the clock and handles their wrap (costa/time.hpp).
   target.start(static_cast<costa::Microseconds>(clock.nowMicroseconds()));
+  filters.update(target.node());
   for (;;) {
     const auto now = static_cast<costa::Microseconds>(clock.nowMicroseconds());
     for (const costa::CanControllerEvent event : can.poll()) {
@@ -57,5 +86,6 @@ int main() {
       target.onFrame(frame, now);
     }
     target.process(now);  // timers, and frames that waited for a free mailbox
+    filters.update(target.node());
   }
 }

@@ -33,13 +33,12 @@ bool BxCanPort::setFilters(const CanIdFilter* filters, size_t count) noexcept {
   for (uint32_t bits = own; bits != 0U; bits >>= 1U) {
     ++banks;
   }
-  registers_.fmr = registers_.fmr | fmr::kFinit;
-  registers_.fa1r = registers_.fa1r & ~own;  // a bank is changed while inactive
   if (count > 2U * banks) {
-    registers_.fmr = registers_.fmr & ~fmr::kFinit;
-    acceptEverythingIntoFifo0();
+    acceptAllFrames();
     return false;
   }
+  registers_.fmr = registers_.fmr | fmr::kFinit;
+  registers_.fa1r = registers_.fa1r & ~own;    // a bank is changed while inactive
   registers_.fm1r = registers_.fm1r & ~own;    // mask mode
   registers_.fs1r = registers_.fs1r & ~own;    // two 16-bit filters
   registers_.ffa1r = registers_.ffa1r & ~own;  // into FIFO 0
@@ -54,6 +53,14 @@ bool BxCanPort::setFilters(const CanIdFilter* filters, size_t count) noexcept {
   registers_.fa1r = registers_.fa1r | active;
   registers_.fmr = registers_.fmr & ~fmr::kFinit;
   return true;
+}
+
+void BxCanPort::acceptAllFrames() noexcept {
+  using namespace bxcan;
+  registers_.fmr = registers_.fmr | fmr::kFinit;
+  registers_.fa1r = registers_.fa1r & ~ownBanks();
+  registers_.fmr = registers_.fmr & ~fmr::kFinit;
+  acceptEverythingIntoFifo0();
 }
 
 }  // namespace costa::port::stm32

@@ -92,6 +92,9 @@ class BxCanPort final : public CanTransmitter, public CanBitRateControl {
   /// banks are written (FINIT). Call it after start(), from the node's context, whenever
   /// Node::receiveFiltersVersion() changed.
   bool setFilters(const CanIdFilter* filters, size_t count) noexcept;
+  /// Accepts every frame into FIFO 0 again, as after start(): bank 0 accepts all, CAN1's other
+  /// banks are deactivated.
+  void acceptAllFrames() noexcept;
 
   /// Hands `frame` to a free transmit mailbox and requests its transmission. False, touching
   /// nothing, when all three mailboxes are pending. A DLC above 8 is sent as 8.
