@@ -45,6 +45,7 @@ TEST(FeaturesBuild, IsTheVariantCMakeAskedFor) {
   add(features::kNodeGuarding, "NODE_GUARDING");
   add(features::kHeartbeatConsumer, "HEARTBEAT_CONSUMER");
   add(features::kParameterStorage, "PARAMETER_STORAGE");
+  add(features::kTime, "TIME");
   EXPECT_EQ(compiledIn, COSTA_EXPECTED_FEATURES);
 }
 
@@ -133,6 +134,19 @@ TEST_F(FeaturesTest, HeartbeatsAreIgnoredWithoutHeartbeatConsumer) {
                  "tx 081 [8] 30 81 11 05 00 00 00 00  # node 5 missed its heartbeat", "silence")),
       "");
   EXPECT_EQ(ignored() - before, features::kHeartbeatConsumer ? 0U : 1U);
+}
+
+TEST_F(FeaturesTest, TimeIsIgnoredWithoutTime) {
+  EXPECT_EQ(play("tx 701 [1] 00\n"
+                 "rx 601 [8] 40 12 10 00 00 00 00 00  # 0x1012, COB-ID TIME\n" +
+                 lines(features::kTime, "tx 581 [8] 43 12 10 00 00 01 00 80  # consumer, 0x100",
+                       "tx 581 [8] 80 12 10 00 00 00 02 06  # object does not exist")),
+            "");
+  const uint32_t before = ignored();
+  EXPECT_EQ(play("rx 100 [6] 10 27 00 00 2C 01  # 00:00:10.000, day 300\n"), "");
+  EXPECT_EQ(ignored() - before, features::kTime ? 0U : 1U);
+  TimeOfDay time;
+  EXPECT_EQ(bus_->node().timeOfDay(&time), features::kTime);
 }
 
 TEST_F(FeaturesTest, NothingIsStoredWithoutParameterStorage) {

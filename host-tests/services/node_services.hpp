@@ -45,6 +45,7 @@ struct NodeServices {
             settings.sdoTimeout),
         heartbeat(dictionary, tx, clock),
         sync(dictionary, tx, emcy, clock, router),
+        time(dictionary, tx, clock, router),
         pdos(pdoContext, rpdos, 2, tpdos, 2),
         stored(dictionary, settings, listeners),
         bitTiming(settings.bitRateControl, settings.bitTiming),
@@ -54,12 +55,12 @@ struct NodeServices {
         lssBridge(settings, bitTiming, stored, listeners, nmt),
         lss(tx, lssBridge),
         nmt(NmtStateMachine::Services{dictionary, settings, clock, listeners, tx, sdo, heartbeat,
-                                      emcy, sync, pdos, errorControl, stored, bitTiming, lss,
+                                      emcy, sync, time, pdos, errorControl, stored, bitTiming, lss,
                                       router},
             settings.nodeId),
         services(ServiceObjects::Hooks{&emcy, &sync, &errorControl.guardingObjects(),
                                        &stored.commands(), &errorControl.consumerObjects(),
-                                       &heartbeat, &pdos}) {
+                                       &heartbeat, &time, &pdos}) {
     access.setObserver(stored.autoSave());
     pdos.bind();
     EXPECT_TRUE(listeners.add(listener));
@@ -84,6 +85,7 @@ struct NodeServices {
   SdoServer sdo;
   HeartbeatProducer heartbeat;
   SyncService sync;
+  TimeServiceChoice time;
   RpdoChannel rpdos[2];
   TpdoChannel tpdos[2];
   PdoEngine pdos;

@@ -86,6 +86,7 @@ void NmtStateMachine::resetCommunication() noexcept {
   services_.emcy.onResetCommunication();
   services_.errorControl.reset(nodeId_);
   services_.sync.configure(services_.clock.now);
+  services_.time.configure();
   services_.pdos.configure();
   CanFrame bootUp;
   bootUp.id = cob::kErrorControlBase + nodeId_;

@@ -18,6 +18,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
            settings_.sdoTimeout),
       heartbeat_(dictionary_, tx_, clock_),
       sync_(dictionary_, tx_, emcy_, clock_, router_),
+      time_(dictionary_, tx_, clock_, router_),
       pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
       stored_(dictionary_, settings_, listeners_),
       bitTiming_(settings_.bitRateControl, settings_.bitTiming),
@@ -27,12 +28,12 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       lssBridge_(settings_, bitTiming_, stored_, listeners_, nmt_),
       lss_(tx_, lssBridge_),
       nmt_(NmtStateMachine::Services{dictionary_, settings_, clock_, listeners_, tx_, sdo_,
-                                     heartbeat_, emcy_, sync_, pdos_, errorControl_, stored_,
+                                     heartbeat_, emcy_, sync_, time_, pdos_, errorControl_, stored_,
                                      bitTiming_, lss_, router_},
            settings_.nodeId),
       services_(ServiceObjects::Hooks{&emcy_, &sync_, &errorControl_.guardingObjects(),
                                       &stored_.commands(), &errorControl_.consumerObjects(),
-                                      &heartbeat_, &pdos_}) {
+                                      &heartbeat_, &time_, &pdos_}) {
   access_.setObserver(stored_.autoSave());
   pdos_.bind();
 }
@@ -91,6 +92,7 @@ NodeStatistics Node::statistics() const noexcept {
   s.unresolvableMappings = pdos_.unresolvableMappings();
   s.hooksRefused = hooksRefused_;
   s.listenersRefused = listeners_.refused();
+  s.timeFramesIgnored = time_.framesIgnored();
   return s;
 }
 

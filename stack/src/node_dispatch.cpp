@@ -17,6 +17,9 @@ void Node::buildRoutes() noexcept {
   router_.add(cob::kNmt, Route::kNmt);
   router_.add(static_cast<uint16_t>(cob::kSdoRxBase + id), Route::kSdo);
   router_.add(static_cast<uint16_t>(sync_.canId()), Route::kSync);
+  if (time_.consumer()) {
+    router_.add(static_cast<uint16_t>(time_.canId()), Route::kTime);
+  }
   for (size_t i = 0; i < pdos_.rpdoCount(); ++i) {
     const RpdoChannel& rpdo = pdos_.rpdo(i);
     if (rpdo.valid()) {
@@ -76,6 +79,7 @@ COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame
       }
       return true;
     }
+    case Route::kTime: return preOrOperational() && time_.onFrame(frame, clock_.now);
     case Route::kSdo: {
       return preOrOperational() && sdo_.onRequest(frame, clock_.now);
     }
@@ -158,6 +162,7 @@ Microseconds Node::runDue() noexcept {
     if (sync_.process(at, preOrOperational(), &sync)) {
       handleSync(sync);
     }
+    time_.process(at, preOrOperational());
     pdos_.process(at);
     emcy_.process(at, nmt_.state(), tx_);
   }
@@ -165,6 +170,7 @@ Microseconds Node::runDue() noexcept {
   Microseconds next = earliest(sdo_.nextDeadline(), heartbeat_.nextDeadline());
   next = earliest(next, errorControl_.nextDeadline());
   next = earliest(next, sync_.nextDeadline());
+  next = earliest(next, time_.nextDeadline());
   next = earliest(next, pdos_.nextDeadline());
   next = earliest(next, emcy_.nextDeadline(nmt_.state()));
   next = earliest(next, lss_.nextDeadline());

@@ -9,12 +9,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/features.hpp"
 #include "costa/heartbeat_consumer.hpp"
 #include "costa/lss_slave.hpp"
 #include "costa/node_guarding.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/parameter_store.hpp"
 #include "costa/store_commands.hpp"
+#include "costa/time_service.hpp"
 
 namespace costa {
 
@@ -216,5 +218,48 @@ class AbsentStoreCommands final : public AbsentObjects {
     (void)listener;
   }
 };
+
+/// TIME compiled out: TIME frames are not routed, 0x1012 does not exist, no clock of day.
+class AbsentTimeService final : public AbsentObjects {
+ public:
+  AbsentTimeService(od::ObjectDictionary& dictionary, TransmitPath& tx, NodeClock& clock,
+                    FrameRouter& routes) noexcept {
+    (void)dictionary;
+    (void)tx;
+    (void)clock;
+    (void)routes;
+  }
+  void configure() noexcept {}
+  bool consumer() const noexcept { return false; }
+  uint32_t canId() const noexcept { return 0; }
+  bool onFrame(const CanFrame& frame, Microseconds now) noexcept {
+    (void)frame;
+    (void)now;
+    return false;
+  }
+  bool timeOfDay(Microseconds now, TimeOfDay* out) const noexcept {
+    (void)now;
+    (void)out;
+    return false;
+  }
+  bool setTimeOfDay(const TimeOfDay& time, Microseconds now) noexcept {
+    (void)time;
+    (void)now;
+    return false;
+  }
+  void setProducerPeriod(Microseconds period, Microseconds now) noexcept {
+    (void)period;
+    (void)now;
+  }
+  void process(Microseconds now, bool allowed) noexcept {
+    (void)now;
+    (void)allowed;
+  }
+  Microseconds nextDeadline() const noexcept { return kNever; }
+  uint32_t framesIgnored() const noexcept { return 0; }
+};
+
+/// The node's TIME service: the service, or its stand-in.
+using TimeServiceChoice = ServiceIf<features::kTime, TimeService, AbsentTimeService>;
 
 }  // namespace costa

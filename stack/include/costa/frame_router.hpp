@@ -21,6 +21,7 @@ namespace costa {
 enum class Route : uint8_t {
   kNmt,          ///< NMT command (0x000)
   kSync,         ///< SYNC (consumer)
+  kTime,         ///< TIME (consumer)
   kSdo,          ///< SDO request to the node's server
   kLss,          ///< LSS master request (0x7E5)
   kRpdo,         ///< an RPDO; `channel` is its RpdoChannel

@@ -61,6 +61,7 @@ class NmtStateMachine {
     HeartbeatProducer& heartbeat;
     EmcyProducer& emcy;
     SyncService& sync;
+    TimeServiceChoice& time;
     PdoEngine& pdos;
     ErrorControl& errorControl;
     StoredParameters& stored;

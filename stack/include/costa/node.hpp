@@ -188,6 +188,19 @@ class Node {
     return stored_.storeLssConfiguration(nodeId, timing);
   }
 
+  // --- TIME (features::kTime) -----------------------------------------------------------------
+  /// The clock of day: set by the TIME frames the node consumes (0x1012 bit 31) or by
+  /// setTimeOfDay(), running on with the node's clock. False while never set (or without TIME).
+  bool timeOfDay(TimeOfDay* out) const noexcept { return time_.timeOfDay(clock_.now, out); }
+  /// Sets the clock of day from the application's time source. False for milliseconds of a day
+  /// or more (or without TIME).
+  bool setTimeOfDay(const TimeOfDay& time) noexcept { return time_.setTimeOfDay(time, clock_.now); }
+  /// A producer (0x1012 bit 30) sends TIME every `period` from now on (0: stops), in
+  /// pre-operational and operational, once the clock of day is set.
+  void setTimeProducerPeriod(Microseconds period) noexcept {
+    time_.setProducerPeriod(period, clock_.now);
+  }
+
   // --- Views ----------------------------------------------------------------------------------
   od::ObjectDictionary& dictionary() noexcept { return dictionary_; }
   const od::ObjectDictionary& dictionary() const noexcept { return dictionary_; }
@@ -241,6 +254,7 @@ class Node {
   SdoServer sdo_;
   HeartbeatProducer heartbeat_;
   SyncService sync_;
+  TimeServiceChoice time_;
   PdoEngine pdos_;
   StoredParameters stored_;
   BitTimingSwitch bitTiming_;

@@ -20,6 +20,7 @@ struct NodeStatistics {
   uint32_t unresolvableMappings = 0;  ///< PDO mappings that could not be resolved (PDO empty).
   uint32_t hooksRefused = 0;          ///< attachHook() calls refused: hook table full.
   uint32_t listenersRefused = 0;      ///< addListener() calls refused: listener table full.
+  uint32_t timeFramesIgnored = 0;     ///< TIME frames not 6 bytes long, or past midnight.
 };
 
 }  // namespace costa

@@ -1,6 +1,6 @@
 // Which of the node's services owns an object of the communication area: the hook the stack
-// itself puts behind 0x1003, 0x1005..0x1007, 0x100C, 0x100D, 0x1010, 0x1011, 0x1014, 0x1016,
-// 0x1017, 0x1019 and 0x1400..0x1BFF. A switch, not a table: no RAM per object, O(1).
+// itself puts behind 0x1003, 0x1005..0x1007, 0x100C, 0x100D, 0x1010, 0x1011, 0x1012, 0x1014,
+// 0x1016, 0x1017, 0x1019 and 0x1400..0x1BFF. A switch, not a table: no RAM per object, O(1).
 // Application hooks (HookRegistry) take precedence over these.
 #pragma once
 
@@ -21,12 +21,13 @@ class ServiceObjects {
     ObjectHook* store;      ///< 0x1010, 0x1011
     ObjectHook* consumer;   ///< 0x1016
     ObjectHook* heartbeat;  ///< 0x1017
+    ObjectHook* time;       ///< 0x1012
     ObjectHook* pdos;       ///< 0x1400..0x1BFF
   };
 
   explicit ServiceObjects(const Hooks& hooks) noexcept
       : hooks_{{nullptr, hooks.emcy, hooks.sync, hooks.guarding, hooks.store, hooks.consumer,
-                hooks.heartbeat},
+                hooks.heartbeat, hooks.time},
                hooks.pdos} {}
 
   /// The hook of the service that owns `index` when that service refines reads (prepareRead:
@@ -56,15 +57,17 @@ class ServiceObjects {
   static constexpr uint32_t kStoreReader = 1U << 4U;  // store commands (or their stand-in)
   static constexpr uint32_t kGuardingReader = features::kNodeGuarding ? 0U : 1U << 3U;
   static constexpr uint32_t kConsumerReader = features::kHeartbeatConsumer ? 0U : 1U << 5U;
+  static constexpr uint32_t kTimeReader = features::kTime ? 0U : 1U << 7U;
   // cppcheck-suppress badBitmaskCheck ; a service's bit is zero when the service is compiled in
-  static constexpr uint32_t kReaders = kStoreReader | kGuardingReader | kConsumerReader;
+  static constexpr uint32_t kReaders =
+      kStoreReader | kGuardingReader | kConsumerReader | kTimeReader;
   /// Which service owns 0x1000 + n: 0 none, else a position in Table::of.
   static constexpr uint8_t kOwners[0x20] = {
       0, 0, 0, 1, 0, 2, 2, 2, 0, 0, 0, 0, 3, 3, 0, 0,  // 0x1003 EMCY; 0x1005-7 SYNC; 0x100C/D
-      4, 4, 0, 0, 1, 0, 5, 6, 0, 2, 0, 0, 0, 0, 0, 0,  // 0x1010/1 store; 0x1014; 0x1016/7; 0x1019
+      4, 4, 7, 0, 1, 0, 5, 6, 0, 2, 0, 0, 0, 0, 0, 0,  // 0x1010/1 store; 0x1012 TIME; 0x1014; ...
   };
   struct Table {
-    ObjectHook* of[7];  ///< [0] null, then emcy, sync, guarding, store, consumer, heartbeat
+    ObjectHook* of[8];  ///< [0] null, emcy, sync, guarding, store, consumer, heartbeat, time
     ObjectHook* pdos;
   };
   Table hooks_;

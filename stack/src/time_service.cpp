@@ -1,0 +1,134 @@
+#include "costa/time_service.hpp"
+
+#include "costa/cob_ids.hpp"
+#include "costa/frame_router.hpp"
+#include "costa/od/little_endian.hpp"
+
+namespace costa {
+namespace {
+
+/// The clock of day is folded forward this often, far inside the 71.6 min of the µs clock.
+constexpr uint32_t kRebasePeriod = 600000000;  // 10 min
+constexpr uint32_t kMillisecondMask = 0x0FFFFFFF;
+
+/// `time` `elapsed` milliseconds later.
+TimeOfDay later(const TimeOfDay& time, uint32_t elapsed) noexcept {
+  const uint64_t milliseconds = uint64_t{time.milliseconds} + elapsed;
+  TimeOfDay result;
+  result.milliseconds = static_cast<uint32_t>(milliseconds % TimeOfDay::kMillisecondsPerDay);
+  result.days = static_cast<uint16_t>(time.days + milliseconds / TimeOfDay::kMillisecondsPerDay);
+  return result;
+}
+
+}  // namespace
+
+void TimeService::configure() noexcept {
+  const auto cob = static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, 0x100));
+  canId_ = cob & 0x7FFU;
+  consumer_ = dictionary_.findObject(kCobIdIndex) != nullptr && (cob & kConsume) != 0U;
+  producer_ = dictionary_.findObject(kCobIdIndex) != nullptr && (cob & kProduce) != 0U;
+  routes_.invalidate();
+}
+
+bool TimeService::onFrame(const CanFrame& frame, Microseconds now) noexcept {
+  const uint32_t milliseconds = loadU32(frame.data) & kMillisecondMask;
+  if (frame.rtr || frame.dlc != kLength || milliseconds >= TimeOfDay::kMillisecondsPerDay) {
+    ++framesIgnored_;
+    return false;
+  }
+  TimeOfDay time;
+  time.milliseconds = milliseconds;
+  time.days = loadU16(frame.data + 4);
+  return setTimeOfDay(time, now);
+}
+
+bool TimeService::setTimeOfDay(const TimeOfDay& time, Microseconds now) noexcept {
+  if (time.milliseconds >= TimeOfDay::kMillisecondsPerDay) {
+    return false;
+  }
+  base_ = time;
+  baseAt_ = now;
+  set_ = true;
+  rebase_.start(now, kRebasePeriod);
+  clock_.schedule(rebase_.next());
+  if (period_ != 0U && !timer_.running()) {
+    timer_.start(now, period_);
+    clock_.schedule(timer_.next());
+  }
+  return true;
+}
+
+void TimeService::advanceTo(Microseconds now) noexcept {
+  const uint32_t elapsed = (now - baseAt_) / 1000U;
+  baseAt_ += elapsed * 1000U;
+  base_ = later(base_, elapsed);
+}
+
+bool TimeService::timeOfDay(Microseconds now, TimeOfDay* out) const noexcept {
+  if (!set_) {
+    return false;
+  }
+  *out = later(base_, (now - baseAt_) / 1000U);
+  return true;
+}
+
+void TimeService::setProducerPeriod(Microseconds period, Microseconds now) noexcept {
+  period_ = period;
+  if (period == 0U || !set_) {
+    timer_.stop();
+    return;
+  }
+  timer_.start(now, period);
+  clock_.schedule(timer_.next());
+}
+
+void TimeService::process(Microseconds now, bool allowed) noexcept {
+  if (set_ && rebase_.fired(now)) {
+    advanceTo(now);
+    rebase_.start(now, kRebasePeriod);
+  }
+  if (period_ == 0U || !timer_.fired(now)) {
+    return;
+  }
+  // The next TIME one period after this one was due; late by a period or more: from now.
+  const Microseconds due = timer_.due();
+  timer_.start(now - due >= period_ ? now : due, period_);
+  if (!allowed || !producer_) {
+    return;
+  }
+  advanceTo(now);
+  CanFrame frame;
+  frame.id = canId_;
+  frame.dlc = kLength;
+  encode(base_, frame.data);
+  tx_.send(frame);
+}
+
+void TimeService::encode(const TimeOfDay& time, uint8_t* bytes) noexcept {
+  storeU32(bytes, time.milliseconds & kMillisecondMask);
+  storeU16(bytes + 4, time.days);
+}
+
+AbortCode TimeService::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                             const uint8_t* data, size_t length) noexcept {
+  if (ref.index() == kCobIdIndex && length == 4U) {
+    const uint32_t value = loadU32(data);
+    if ((value & 0x20000000U) != 0U || (value & 0x1FFFF800U) != 0U) {
+      return AbortCode::kInvalidValue;  // 29-bit TIME is not supported
+    }
+    if (cob::isRestrictedCanId(value & 0x7FFU)) {
+      return AbortCode::kInvalidValue;  // CiA 301 7.3.5
+    }
+    const bool inUse = consumer_ || producer_;
+    if (inUse && (value & 0x7FFU) != canId_) {
+      return AbortCode::kInvalidValue;  // clear bits 31 and 30 before changing the CAN-ID
+    }
+  }
+  const AbortCode written = dictionary.write(ref, data, length);
+  if (written == AbortCode::kNone) {
+    configure();
+  }
+  return written;
+}
+
+}  // namespace costa
