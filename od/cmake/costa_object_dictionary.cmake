@@ -3,13 +3,20 @@
 # Generates the object dictionary tables of an EDS (CiA 306) at build time and defines two
 # static libraries:
 #   <target>        NAME_od.cpp: costa::gen::<cppname>::kDefinition and its value blocks.
-#                   Its PUBLIC include directory holds <cppname>_od.hpp; links costa_od.
+#                   Its PUBLIC include directory holds <cppname>_od.hpp; links the dictionary
+#                   runtime: Costa::od (Costa's tree, or the installed package), else costa_od.
 #   <target>_names  NAME_od_names.cpp: costa::gen::<cppname>::kNames (optional for firmware).
 # The generated files live in ${CMAKE_CURRENT_BINARY_DIR}/gen/<cppname>/. They are rewritten
 # only when their content changes, so editing the EDS recompiles only what it affects.
+#
+# The generator's directory is od/generator beside this file; the installed package
+# (CostaConfig.cmake) sets COSTA_ODGEN_DIR to its copy before including this file.
 include_guard(GLOBAL)
 
-set_property(GLOBAL PROPERTY COSTA_ODGEN_DIR "${CMAKE_CURRENT_LIST_DIR}/../generator")
+if(NOT COSTA_ODGEN_DIR)
+  set(COSTA_ODGEN_DIR "${CMAKE_CURRENT_LIST_DIR}/../generator")
+endif()
+set_property(GLOBAL PROPERTY COSTA_ODGEN_DIR "${COSTA_ODGEN_DIR}")
 
 # Every module of the generator: a change to any of them regenerates the tables.
 set_property(GLOBAL PROPERTY COSTA_ODGEN_SOURCES
@@ -72,9 +79,17 @@ function(costa_add_object_dictionary target)
 
   add_library(${target} STATIC "${out_cpp}" "${out_hpp}")
   target_include_directories(${target} PUBLIC "${out_dir}")
+<<<<<<< HEAD
   target_link_libraries(${target} PUBLIC costa_od)
   # The EDS it was generated from, for programs that hand it out (costa-slave --eds).
   set_target_properties(${target} PROPERTIES COSTA_EDS "${eds}")
+=======
+  if(TARGET Costa::od)
+    target_link_libraries(${target} PUBLIC Costa::od)
+  else()
+    target_link_libraries(${target} PUBLIC costa_od)
+  endif()
+>>>>>>> cmakepkg
   if(TARGET costa_freestanding)
     # Generated tables are part of the freestanding core.
     target_link_libraries(${target} PRIVATE costa_freestanding)

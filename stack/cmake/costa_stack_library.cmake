@@ -101,8 +101,12 @@ function(costa_add_stack_library target)
                  "${generated}/costa/features.hpp" @ONLY)
 
   add_library(${target} STATIC ${sources})
-  target_include_directories(${target} PUBLIC "${COSTA_STACK_DIR}/include" "${generated}")
-  target_link_libraries(${target} PUBLIC costa_od costa_port_interface PRIVATE costa_freestanding)
+  # Installed (tools/cmake/CostaInstall.cmake), the headers and features.hpp are in one directory.
+  target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${COSTA_STACK_DIR}/include>
+                                              $<BUILD_INTERFACE:${generated}>
+                                              $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(${target} PUBLIC costa_od costa_port_interface
+                        PRIVATE $<BUILD_INTERFACE:costa_freestanding>)
 endfunction()
 
 function(costa_missing_features out)

@@ -2,11 +2,18 @@
 #
 # costa_warnings      : the warning set, as errors (all code of the project).
 # costa_freestanding  : what the core must compile with (stack/, od/, port interfaces).
+# Neither is exported (tools/cmake/CostaInstall.cmake): the libraries link them as
+# $<BUILD_INTERFACE:...>, options of their own compilation only.
 
 add_library(costa_warnings INTERFACE)
 target_compile_options(costa_warnings INTERFACE
   -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wcast-align
-  -Wold-style-cast -Wnull-dereference -Wdouble-promotion -Wformat=2 -Werror)
+  -Wold-style-cast -Wnull-dereference -Wdouble-promotion -Wformat=2)
+# Errors in Costa's own build; a project that adds Costa as a subdirectory (another compiler
+# version, other warnings) gets them as warnings unless it asks (COSTA_WARNINGS_AS_ERRORS).
+if(COSTA_WARNINGS_AS_ERRORS)
+  target_compile_options(costa_warnings INTERFACE -Werror)
+endif()
 
 add_library(costa_freestanding INTERFACE)
 target_compile_options(costa_freestanding INTERFACE
