@@ -169,7 +169,9 @@ BlockTransferResult SdoBlockClient::upload(uint16_t index, uint8_t subIndex,
     result.error = "bad initiate block upload response " + hexBytes(r, 8);
     return result;
   }
-  const bool crcUsed = options.crc && (r[0] & 0x04U) != 0U;
+  // Costa's rule: when its initiate response sets sc, the end frame carries the valid CRC,
+  // whether this client asked for one (cc) or not; without sc it carries 0.
+  const bool crcUsed = (r[0] & 0x04U) != 0U;
   const bool sized = (r[0] & 0x02U) != 0U;
   const uint32_t size = loadU32(r + 4);
   send({0xA3});
@@ -222,7 +224,7 @@ BlockTransferResult SdoBlockClient::upload(uint16_t index, uint8_t subIndex,
   if (crcUsed && crc != crcOf(result.data)) {
     result.error = "CRC mismatch";
   } else if (!crcUsed && crc != 0U) {
-    result.error = "CRC sent although not both sides support it";
+    result.error = "CRC sent although the server did not announce CRC support";
   } else if (sized && size != result.data.size()) {
     result.error = "indicated " + std::to_string(size) + " bytes, received " +
                    std::to_string(result.data.size());

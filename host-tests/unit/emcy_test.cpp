@@ -62,6 +62,8 @@ TEST_F(Emcy, HistoryKeepsTheNewestAndIsClearedByWritingZero) {
     tx 581 [8] 80 03 10 00 30 00 09 06
     rx 601 [8] 23 03 10 01 00 00 00 00   # the entries are read-only
     tx 581 [8] 80 03 10 01 02 00 01 06
+    rx 601 [8] 2B 03 10 00 00 00 00 00   # UNSIGNED8: two bytes are too many, even zeros
+    tx 581 [8] 80 03 10 00 12 00 07 06
     rx 601 [8] 2F 03 10 00 00 00 00 00
     tx 581 [8] 60 03 10 00 00 00 00 00
     rx 601 [8] 40 03 10 00 00 00 00 00

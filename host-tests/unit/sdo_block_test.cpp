@@ -176,15 +176,17 @@ TEST_F(SdoBlock, UploadsTheDeviceNameWithCrc) {
   )");
 }
 
-TEST_F(SdoBlock, UploadWithoutCrcSendsZero) {
+// The initiate response sets sc, so the end frame carries the valid CRC even when the client did
+// not ask for one: masters that check it whenever sc is set accept it, the others ignore it.
+TEST_F(SdoBlock, UploadWithoutClientCrcStillSendsTheValidCrc) {
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] A0 08 10 00 7F 00 00 00
-    tx 581 [8] C6 08 10 00 0D 00 00 00
+    rx 601 [8] A0 08 10 00 7F 00 00 00   # no CRC asked
+    tx 581 [8] C6 08 10 00 0D 00 00 00   # sc 1: the server supports CRC
     rx 601 [8] A3 00 00 00 00 00 00 00
     tx 581 [8] 01 43 6F 73 74 61 20 65
     tx 581 [8] 82 78 61 6D 70 6C 65 00
     rx 601 [8] A2 02 7F 00 00 00 00 00
-    tx 581 [8] C5 00 00 00 00 00 00 00
+    tx 581 [8] C5 32 17 00 00 00 00 00   # end: CRC 0x1732, as with a CRC request
     rx 601 [8] A1 00 00 00 00 00 00 00
   )");
 }

@@ -206,7 +206,11 @@ Microseconds EmcyProducer::nextDeadline(NmtState state) const noexcept {
 AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                               const uint8_t* data, size_t length) noexcept {
   if (ref.index() == kErrorHistoryIndex) {
-    if (ref.subIndex() != 0U || length < 1U || data[0] != 0U) {
+    if (ref.subIndex() == 0U && length != 1U) {
+      // Sub-index 0 is an UNSIGNED8: the length is checked before the value (CiA 301).
+      return length > 1U ? AbortCode::kLengthTooHigh : AbortCode::kLengthTooLow;
+    }
+    if (ref.subIndex() != 0U || data[0] != 0U) {
       return AbortCode::kInvalidValue;
     }
     for (unsigned sub = 1; sub < od::entryCount(*ref.object); ++sub) {

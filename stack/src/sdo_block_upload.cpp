@@ -9,7 +9,6 @@ constexpr size_t kSegmentBytes = 7;
 
 // Client frames: ccs 5 in bits 7..5, cs in bits 1..0 (bit 2 of the initiate request: cc).
 constexpr uint8_t kClientCommandMask = 0xE3;
-constexpr uint8_t kClientCrc = 0x04;
 constexpr uint8_t kEndResponse = 0xA1;       // cs 1
 constexpr uint8_t kSubBlockResponse = 0xA2;  // cs 2
 constexpr uint8_t kStartUpload = 0xA3;       // cs 3
@@ -21,7 +20,6 @@ constexpr uint8_t kLastSegment = 0x80;
 }  // namespace
 
 void SdoBlockUpload::start(const uint8_t* request, size_t size) noexcept {
-  crcUsed_ = (request[0] & kClientCrc) != 0U;
   crc_.reset();
   crcDone_ = 0;
   size_ = size;
@@ -132,7 +130,10 @@ AbortCode SdoBlockUpload::acknowledged(uint8_t sequence, uint8_t nextBlockSize) 
 void SdoBlockUpload::sendEnd() noexcept {
   const size_t inLast = size_ == 0U ? 0U : (size_ - 1U) % kSegmentBytes + 1U;
   const auto unused = static_cast<uint8_t>(kSegmentBytes - inLast);
-  const uint16_t crc = crcUsed_ ? crc_.value() : 0U;
+  // The initiate response announced CRC support (sc = 1), so the end frame carries the valid
+  // CRC whether the client asked for it or not: CiA 301 makes it 0 only when unused, and masters
+  // that check it whenever sc is set (without having set cc) accept a valid one either way.
+  const uint16_t crc = crc_.value();
   const uint8_t request[8] = {static_cast<uint8_t>(kEndRequest | (unused << 2U)),
                               static_cast<uint8_t>(crc), static_cast<uint8_t>(crc >> 8U)};
   channel_.send(request);

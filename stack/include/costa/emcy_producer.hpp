@@ -92,9 +92,9 @@ class EmcyProducer : public ObjectHook {
   /// time, or kNever (nothing queued, or a state without EMCY). O(1).
   Microseconds nextDeadline(NmtState state) const noexcept;
 
-  /// 0x1003 (writing 0 to sub-index 0 clears the history; any other write aborts 0x06090030),
-  /// 0x1014 (the CAN-ID of a valid EMCY cannot change; 29-bit refused; a valid EMCY cannot
-  /// have a restricted CAN-ID, cob::isRestrictedCanId).
+  /// 0x1003 (writing 0 to sub-index 0 clears the history; any other value aborts 0x06090030, any
+  /// other length 0x06070012/0x06070013), 0x1014 (the CAN-ID of a valid EMCY cannot change; 29-bit
+  /// refused; a valid EMCY cannot have a restricted CAN-ID, cob::isRestrictedCanId).
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
 

@@ -57,7 +57,6 @@ class SdoBlockUpload {
   SdoChannel& channel_;
   SdoValueReader& reader_;
   Phase phase_ = Phase::kDone;
-  bool crcUsed_ = false;
   Crc16 crc_;
   size_t crcDone_ = 0;     ///< Bytes already in the CRC (segments sent at least once).
   size_t size_ = 0;        ///< Bytes of the value.
