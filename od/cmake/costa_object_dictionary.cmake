@@ -79,17 +79,13 @@ function(costa_add_object_dictionary target)
 
   add_library(${target} STATIC "${out_cpp}" "${out_hpp}")
   target_include_directories(${target} PUBLIC "${out_dir}")
-<<<<<<< HEAD
-  target_link_libraries(${target} PUBLIC costa_od)
-  # The EDS it was generated from, for programs that hand it out (costa-slave --eds).
-  set_target_properties(${target} PROPERTIES COSTA_EDS "${eds}")
-=======
   if(TARGET Costa::od)
     target_link_libraries(${target} PUBLIC Costa::od)
   else()
     target_link_libraries(${target} PUBLIC costa_od)
   endif()
->>>>>>> cmakepkg
+  # The EDS it was generated from, for programs that hand it out (costa-slave --eds).
+  set_target_properties(${target} PROPERTIES COSTA_EDS "${eds}")
   if(TARGET costa_freestanding)
     # Generated tables are part of the freestanding core.
     target_link_libraries(${target} PRIVATE costa_freestanding)
