@@ -3,8 +3,9 @@
 'use strict';
 
 // node-canopen's SDO client times out after 30 ms by default, too short for a slave running
-// under an emulated CPU; 1 s is CiA 301-sized and still quick when something is missing.
-const sdoTimeoutMs = 1000;
+// under an emulated CPU. 3 s: a busy machine running the VM has stalled a segmented upload for
+// more than 1 s; when something is really missing it still fails within seconds.
+const sdoTimeoutMs = 3000;
 
 class Sdo {
   constructor(bus, nodeId) {
