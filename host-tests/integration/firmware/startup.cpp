@@ -17,6 +17,8 @@ extern Constructor _einit_array[];
 int main();
 // NOLINTNEXTLINE(readability-identifier-naming): CMSIS name, tick_clock.cpp
 void SysTick_Handler();
+// NOLINTNEXTLINE(readability-identifier-naming): the part's name, main.cpp
+void CAN_RX_IRQHandler();
 
 // NOLINTNEXTLINE(readability-identifier-naming): CMSIS name
 [[noreturn]] void Reset_Handler() {
@@ -43,9 +45,9 @@ void SysTick_Handler();
 
 using Handler = void (*)();
 
-// The Cortex-M system exceptions. The CAN driver polls (stub_can.hpp): no interrupt of the part
-// is used, so the table ends here.
-__attribute__((section(".isr_vector"), used)) const Handler sensorVectors[16] = {
+// The Cortex-M system exceptions, then the part's one interrupt that the sensor uses: the CAN
+// controller's receive interrupt (IRQ 0 of this part).
+__attribute__((section(".isr_vector"), used)) const Handler sensorVectors[17] = {
     // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): the initial stack pointer
     reinterpret_cast<Handler>(_estack),
     Reset_Handler,
@@ -63,5 +65,6 @@ __attribute__((section(".isr_vector"), used)) const Handler sensorVectors[16] = 
     nullptr,
     Default_Handler,  // PendSV
     SysTick_Handler,
+    CAN_RX_IRQHandler,  // IRQ 0
 };
 }

@@ -28,4 +28,18 @@ bool StubCan::receive(costa::CanFrame* frame) noexcept {
   return true;
 }
 
+bool StubCan::setFilters(const costa::CanIdFilter* filters, size_t count) noexcept {
+  if (count > StubController::kFilters) {
+    controller_.filterCount = StubController::kAcceptAll;
+    return false;
+  }
+  controller_.filterCount = 0;  // none while they change
+  for (size_t i = 0; i < count; ++i) {
+    controller_.filterId[i] = filters[i].id;
+    controller_.filterMask[i] = filters[i].mask;
+  }
+  controller_.filterCount = static_cast<uint32_t>(count);
+  return true;
+}
+
 }  // namespace sensor
