@@ -19,6 +19,9 @@ constexpr uint32_t kReservedBits = 0x1FFFF800U;  // bits 28..11 of an 11-bit COB
 constexpr uint32_t kIdBits = 0x7FFU;
 constexpr uint16_t kEmcyCobId = 0x1014;
 constexpr uint16_t kSyncCobId = 0x1005;
+constexpr uint16_t kTimeCobId = 0x1012;
+constexpr uint32_t kTimeConsumerBit = 0x80000000U;
+constexpr uint32_t kTimeProducerBit = 0x40000000U;
 constexpr uint16_t kFirstRpdo = 0x1400;
 constexpr uint16_t kLastRpdo = 0x15FF;
 constexpr uint16_t kFirstTpdo = 0x1800;
@@ -85,10 +88,11 @@ const std::vector<std::pair<od::EntryRef, bool>>& pdoCobIdEntries(
   return entries;
 }
 
-/// The SYNC and EMCY COB-ID entries of a definition (invalid refs when it has none).
+/// The SYNC, EMCY and TIME COB-ID entries of a definition (invalid refs when it has none).
 struct CobIdEntries {
   od::EntryRef sync;
   od::EntryRef emcy;
+  od::EntryRef time;
 };
 
 const CobIdEntries& cobIdEntries(const od::Definition& definition) {
@@ -98,7 +102,8 @@ const CobIdEntries& cobIdEntries(const od::Definition& definition) {
     return found->second;
   }
   return known[&definition] =
-             CobIdEntries{u32Entry(definition, kSyncCobId), u32Entry(definition, kEmcyCobId)};
+             CobIdEntries{u32Entry(definition, kSyncCobId), u32Entry(definition, kEmcyCobId),
+                          u32Entry(definition, kTimeCobId)};
 }
 
 /// Calls `visit(PdoCobId, receive)` for every PDO communication parameter of the node.
@@ -165,6 +170,11 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
       !restrictedCanId(sync & kIdBits)) {
     ids.add(sync & kIdBits);
   }
+  const uint32_t time = cobIds.time.valid() ? u32At(dictionary, cobIds.time) : 0U;
+  if ((time & kTimeProducerBit) != 0U && plainStandardId(time) &&
+      !restrictedCanId(time & kIdBits)) {
+    ids.add(time & kIdBits);
+  }
   if (state != NmtState::kOperational) {
     return ids;
   }
@@ -192,6 +202,13 @@ std::string checkConfiguredCanIds(const Node& node) {
     const uint32_t emcy = u32At(dictionary, cobIds.emcy);
     if ((emcy & kInvalidBit) == 0U && restrictedCanId(emcy & kIdBits)) {
       return "valid EMCY COB-ID " + hex(emcy) + " has a restricted CAN-ID";
+    }
+  }
+  if (cobIds.time.valid()) {
+    const uint32_t time = u32At(dictionary, cobIds.time);
+    const bool used = (time & (kTimeConsumerBit | kTimeProducerBit)) != 0U;
+    if (used && (restrictedCanId(time & kIdBits) || !plainStandardId(time))) {
+      return "TIME COB-ID " + hex(time) + " in use has a restricted or 29-bit CAN-ID";
     }
   }
   std::string problem;

@@ -36,7 +36,7 @@ bool restrictedCanId(uint32_t id);
 ///  * with a node-id n (1..127): boot-up/heartbeat/guarding 0x700 + n in any state;
 ///  * in pre-operational and operational: SDO 0x580 + n; EMCY: the COB-ID of 0x1014 when valid
 ///    and not restricted (0x80 + n without 0x1014); SYNC: the COB-ID of 0x1005 when it
-///    produces SYNC (bit 30) and the id is not restricted;
+///    produces SYNC (bit 30) and the id is not restricted; TIME likewise with 0x1012;
 ///  * in operational: each TPDO whose COB-ID (0x1800..0x19FF sub-index 1) is valid, 11-bit and
 ///    allowed for a TPDO (the profile's range, else not restricted).
 CanIdSet allowedTransmitIds(const Node& node, bool lss);
@@ -49,7 +49,8 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss);
 std::string checkTransmittedFrame(const CanFrame& frame, const CanIdSet& allowed);
 
 /// Empty when no COB-ID in the node's dictionary gives a configurable object a restricted
-/// CAN-ID: SYNC 0x1005 (consumed or produced), EMCY 0x1014 when valid, each RPDO and TPDO
+/// CAN-ID: SYNC 0x1005 (consumed or produced), EMCY 0x1014 when valid, TIME 0x1012 when
+/// consumed or produced (nor a 29-bit one), each RPDO and TPDO
 /// (0x1400..0x15FF, 0x1800..0x19FF sub-index 1) when valid (a device profile's own PDO range
 /// replaces the rule); else the first one that does. A node without node-id (0xFF) sends
 /// nothing and its $NODEID defaults mean nothing yet: always empty.

@@ -144,6 +144,12 @@ def synthetic():
         "lss-unconfigured": bytes([0xFF, WAIT_FOR_DEADLINE]) + LSS_CONFIGURATION + LSS_NODE_ID_5
         + LSS_STORE + LSS_WAITING + bytes([POWER_CYCLE]) + wait_event(10),
         "writes-power-cycle": bytes([0]) + writes + bytes([POWER_CYCLE]) + wait_event(20),
+        # TIME on 0x100 (consumed where 0x1012 says so): a time of day, a wrong length, one past
+        # midnight, then a day's rollover.
+        "time": bytes([0]) + frame_event(0x100, 6, [0x10, 0x27, 0, 0, 0x2C, 0x01])
+        + frame_event(0x100, 5, [0x10, 0x27, 0, 0, 0x2C])
+        + frame_event(0x100, 6, [0x00, 0x5C, 0x26, 0x05, 0x2C, 0x01])
+        + frame_event(0x100, 6, [0xFF, 0x5B, 0x26, 0x05, 0x2C, 0x01]) + wait_event(5),
     }
 
 

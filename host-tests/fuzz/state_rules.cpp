@@ -55,6 +55,15 @@ std::string checkSdo(const Node& node) {
   return "";
 }
 
+/// The clock of day, once set, is a time of day (TIME frames past midnight are refused).
+std::string checkTime(const Node& node) {
+  TimeOfDay time;
+  if (node.timeOfDay(&time) && time.milliseconds >= TimeOfDay::kMillisecondsPerDay) {
+    return "clock of day past midnight: " + std::to_string(time.milliseconds) + " ms";
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string checkStateMachines(const Node& node, bool lss) {
@@ -64,6 +73,9 @@ std::string checkStateMachines(const Node& node, bool lss) {
   }
   if (problem.empty()) {
     problem = checkSdo(node);
+  }
+  if (problem.empty()) {
+    problem = checkTime(node);
   }
   return problem;
 }

@@ -13,7 +13,8 @@ namespace costa::fuzz {
 ///    next reset communication is 1..127 or 0xFF;
 ///  * LSS: LssSlave::valid(), its active node-id is the node's, and a device without LSS has
 ///    left it in waiting state with no bit timing switch;
-///  * SDO: SdoServer::valid(), and a transfer runs only in pre-operational or operational.
+///  * SDO: SdoServer::valid(), and a transfer runs only in pre-operational or operational;
+///  * TIME: the clock of day, once set, is before midnight.
 /// Else what is wrong.
 std::string checkStateMachines(const Node& node, bool lss);
 

@@ -139,13 +139,13 @@ class Silent : public ObjectHook {};
 class Quiet : public NodeEvents {};
 
 TEST_F(NodeContract, HooksBeyondTheTableAreRefusedAndCounted) {
-  // The example device holds 3 of the 8 places; 5 more fit.
-  Silent hooks[6];
-  for (int i = 0; i < 5; ++i) {
+  // The example device holds 4 of the 8 places; 4 more fit.
+  Silent hooks[5];
+  for (int i = 0; i < 4; ++i) {
     EXPECT_TRUE(bus_.node().attachHook(0x3000, 0x3000, hooks[i])) << i;
   }
   EXPECT_EQ(bus_.node().statistics().hooksRefused, 0U);
-  EXPECT_FALSE(bus_.node().attachHook(0x3000, 0x3000, hooks[5]));
+  EXPECT_FALSE(bus_.node().attachHook(0x3000, 0x3000, hooks[4]));
   EXPECT_EQ(bus_.node().statistics().hooksRefused, 1U);
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 40 17 10 00 00 00 00 00   # the node goes on as before

@@ -29,6 +29,15 @@ class Trace : public ::testing::Test {
   FrameTracer tracer_;
 };
 
+TEST_F(Trace, TimeShowsTheDateAndTimeOfDay) {
+  EXPECT_EQ(describe("100 [6] 10 27 00 00 00 00"), "TIME 1984-01-01 00:00:10.000 (day 0)");
+  // 2026-11-23 is day 15,667 after 1984-01-01; 13:45:30.250 is 49,530,250 ms.
+  EXPECT_EQ(describe("100 [6] 8A C5 F3 02 33 3D"), "TIME 2026-11-23 13:45:30.250 (day 15667)");
+  EXPECT_EQ(describe("100 [6] 00 00 00 00 3B 00"), "TIME 1984-02-29 00:00:00.000 (day 59)");
+  EXPECT_EQ(describe("100 [5] 10 27 00 00 00"), "TIME (malformed, ignored)");
+  EXPECT_EQ(describe("100 [6] 00 5C 26 05 00 00"), "TIME (malformed, ignored)");  // 24:00
+}
+
 TEST_F(Trace, SegmentedUploadShowsTheWholeString) {
   EXPECT_EQ(describe("601 [8] 40 08 10 00 00 00 00 00"), "SDO upload 0x1008:00");
   EXPECT_EQ(describe("581 [8] 41 08 10 00 0D 00 00 00"),

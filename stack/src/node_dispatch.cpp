@@ -53,6 +53,7 @@ size_t Node::receiveFilters(CanIdFilter* filters, size_t capacity) noexcept {
     }
   }
   // The error control range that errorControlFrame() takes.
+  // cppcheck-suppress knownConditionTrueFalse ; two independent switches that may agree
   if ((features::kHeartbeatConsumer || features::kNodeGuarding) &&
       nmt_.nodeId() != cob::kLssUnconfigured) {
     add(CanIdFilter{static_cast<uint16_t>(cob::kErrorControlBase), 0x780});

@@ -14,11 +14,13 @@ constexpr uint8_t kSelfTest = 3;
 // NOLINTNEXTLINE(cppcoreguidelines-pro-type-member-init)
 ExampleDevice::ExampleDevice(Node& node, uint32_t serialNumber) noexcept
     : node_(node),
+      clock_(node),
       serialNumber_(serialNumber),
       attached_(node.attachHook(kCommand, kCommand, *this) &&
                 node.attachHook(kScratchPad, kScratchPad, *this) &&
-                node.attachHook(kOperatingMode, kOperatingMode, *this) && node.addListener(*this)) {
-}
+                node.attachHook(kOperatingMode, kOperatingMode, *this) &&
+                node.attachHook(ExampleClock::kIndex, ExampleClock::kIndex, clock_) &&
+                node.addListener(*this)) {}
 
 void ExampleDevice::onResetApplication() noexcept {
   restartUptime();

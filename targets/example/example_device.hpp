@@ -12,9 +12,11 @@
 //                           Emptied by reset application.
 //   0x2010 Operating mode   may only be changed in pre-operational; in operational or stopped
 //                           the write aborts with 0x08000022.
+//   0x2012 Clock of day     the node's clock of day (TIME), example_clock.hpp.
 #pragma once
 
 #include "costa/node.hpp"
+#include "example_clock.hpp"
 
 namespace costa::example {
 
@@ -57,6 +59,7 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   void restartUptime() noexcept;
 
   Node& node_;
+  ExampleClock clock_;
   uint32_t serialNumber_;
   Microseconds secondStart_ = 0;  ///< start of the second being counted
   uint32_t uptime_ = 0;           ///< whole seconds since the last reset application

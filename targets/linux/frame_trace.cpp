@@ -123,6 +123,12 @@ std::string FrameTracer::describe(const CanFrame& frame, uint8_t localNodeId) {
   if (id > 0x080 && id <= 0x0FF) {
     return describeEmcy(frame, id - 0x080U == localNodeId);
   }
+  const uint32_t timeCob = dictionary_ != nullptr
+                               ? static_cast<uint32_t>(dictionary_->readUnsigned(0x1012, 0, 0x100))
+                               : 0x100U;
+  if (id == (timeCob & 0x7FFU) && !frame.rtr) {
+    return describeTime(frame);
+  }
   if (id >= 0x180 && id <= 0x57F) {
     return frame.rtr ? "PDO request (RTR)" : "PDO";
   }
@@ -139,6 +145,36 @@ std::string FrameTracer::describe(const CanFrame& frame, uint8_t localNodeId) {
     return describeLss(frame, id == 0x7E5);
   }
   return "";
+}
+
+std::string FrameTracer::describeTime(const CanFrame& frame) {
+  const uint32_t milliseconds = loadLittleEndian(frame.data, 4) & 0x0FFFFFFFU;
+  if (frame.dlc != 6U || milliseconds >= 86400000U) {
+    return "TIME (malformed, ignored)";
+  }
+  // Days since 1984-01-01 as a date (the Gregorian calendar, leap years by the 400-year rule).
+  uint32_t days = static_cast<uint32_t>(loadLittleEndian(frame.data + 4, 2));
+  const uint32_t dayNumber = days;
+  unsigned year = 1984;
+  const auto yearLength = [](unsigned y) {
+    return (y % 4U == 0U && y % 100U != 0U) || y % 400U == 0U ? 366U : 365U;
+  };
+  while (days >= yearLength(year)) {
+    days -= yearLength(year);
+    ++year;
+  }
+  const unsigned monthLengths[12] = {
+      31, yearLength(year) == 366U ? 29U : 28U, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  unsigned month = 0;
+  while (days >= monthLengths[month]) {
+    days -= monthLengths[month];
+    ++month;
+  }
+  char text[80];
+  std::snprintf(text, sizeof(text), "TIME %04u-%02u-%02u %02u:%02u:%02u.%03u (day %u)", year,
+                month + 1U, days + 1U, milliseconds / 3600000U, milliseconds / 60000U % 60U,
+                milliseconds / 1000U % 60U, milliseconds % 1000U, dayNumber);
+  return text;
 }
 
 std::string FrameTracer::describeNmt(const CanFrame& frame) const {

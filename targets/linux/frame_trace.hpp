@@ -30,6 +30,7 @@ class FrameTracer {
   std::string nameOf(uint16_t index, uint8_t subIndex) const;
 
  private:
+  static std::string describeTime(const CanFrame& frame);
   std::string describeNmt(const CanFrame& frame) const;
   std::string describeEmcy(const CanFrame& frame, bool local) const;
   std::string describeErrorControl(const CanFrame& frame, bool local);

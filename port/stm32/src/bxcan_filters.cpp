@@ -21,9 +21,8 @@ constexpr uint32_t halfBank(const CanIdFilter& filter) noexcept {
 }  // namespace
 
 uint32_t BxCanPort::ownBanks() const noexcept {
-  uint32_t banks = (registers_.fmr & bxcan::fmr::kCan2sbMask) >> bxcan::fmr::kCan2sbShift;
-  banks = banks > kBanks ? kBanks : banks;
-  return banks == kBanks ? 0x0FFFFFFFU : (1U << banks) - 1U;
+  const uint32_t banks = (registers_.fmr & bxcan::fmr::kCan2sbMask) >> bxcan::fmr::kCan2sbShift;
+  return (1U << (banks < kBanks ? banks : kBanks)) - 1U;  // at most 28 banks: bits 0..27
 }
 
 bool BxCanPort::setFilters(const CanIdFilter* filters, size_t count) noexcept {
