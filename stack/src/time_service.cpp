@@ -24,7 +24,7 @@ TimeOfDay later(const TimeOfDay& time, uint32_t elapsed) noexcept {
 
 void TimeService::configure() noexcept {
   const auto cob = static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, 0x100));
-  canId_ = cob & 0x7FFU;
+  canId_ = static_cast<uint16_t>(cob & 0x7FFU);
   consumer_ = dictionary_.findObject(kCobIdIndex) != nullptr && (cob & kConsume) != 0U;
   producer_ = dictionary_.findObject(kCobIdIndex) != nullptr && (cob & kProduce) != 0U;
   routes_.invalidate();
@@ -48,12 +48,9 @@ bool TimeService::setTimeOfDay(const TimeOfDay& time, Microseconds now) noexcept
   }
   base_ = time;
   baseAt_ = now;
-  set_ = true;
-  rebase_.start(now, kRebasePeriod);
-  clock_.schedule(rebase_.next());
-  if (period_ != 0U && !timer_.running()) {
-    timer_.start(now, period_);
-    clock_.schedule(timer_.next());
+  schedule(&rebaseAt_, at(now, kRebasePeriod));
+  if (period_ != 0U && nextTime_ == kNever) {
+    schedule(&nextTime_, at(now, period_));
   }
   return true;
 }
@@ -65,7 +62,7 @@ void TimeService::advanceTo(Microseconds now) noexcept {
 }
 
 bool TimeService::timeOfDay(Microseconds now, TimeOfDay* out) const noexcept {
-  if (!set_) {
+  if (rebaseAt_ == kNever) {
     return false;
   }
   *out = later(base_, (now - baseAt_) / 1000U);
@@ -73,26 +70,24 @@ bool TimeService::timeOfDay(Microseconds now, TimeOfDay* out) const noexcept {
 }
 
 void TimeService::setProducerPeriod(Microseconds period, Microseconds now) noexcept {
-  period_ = period;
-  if (period == 0U || !set_) {
-    timer_.stop();
-    return;
+  period_ = period < kLongestDelay ? period : kLongestDelay;
+  nextTime_ = kNever;
+  if (period_ != 0U && rebaseAt_ != kNever) {
+    schedule(&nextTime_, at(now, period_));
   }
-  timer_.start(now, period);
-  clock_.schedule(timer_.next());
 }
 
 void TimeService::process(Microseconds now, bool allowed) noexcept {
-  if (set_ && rebase_.fired(now)) {
+  if (rebaseAt_ != kNever && reached(now, rebaseAt_)) {
     advanceTo(now);
-    rebase_.start(now, kRebasePeriod);
+    schedule(&rebaseAt_, at(now, kRebasePeriod));
   }
-  if (period_ == 0U || !timer_.fired(now)) {
+  if (nextTime_ == kNever || !reached(now, nextTime_)) {
     return;
   }
   // The next TIME one period after this one was due; late by a period or more: from now.
-  const Microseconds due = timer_.due();
-  timer_.start(now - due >= period_ ? now : due, period_);
+  const Microseconds due = nextTime_;
+  schedule(&nextTime_, at(now - due >= period_ ? now : due, period_));
   if (!allowed || !producer_) {
     return;
   }

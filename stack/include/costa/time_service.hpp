@@ -69,7 +69,7 @@ class TimeService : public ObjectHook {
   /// Sends TIME when due (`allowed`: pre-operational or operational); re-bases the clock of day
   /// so that it survives the wrap of the 32-bit microsecond clock.
   void process(Microseconds now, bool allowed) noexcept;
-  Microseconds nextDeadline() const noexcept { return earliest(timer_.next(), rebase_.next()); }
+  Microseconds nextDeadline() const noexcept { return earliest(nextTime_, rebaseAt_); }
 
   uint32_t framesIgnored() const noexcept { return framesIgnored_; }
 
@@ -83,21 +83,24 @@ class TimeService : public ObjectHook {
  private:
   /// Folds the time since `base_` into it (keeps the microseconds below a millisecond).
   void advanceTo(Microseconds now) noexcept;
+  void schedule(Microseconds* deadline, Microseconds at) noexcept {
+    *deadline = at;
+    clock_.schedule(at);
+  }
 
   od::ObjectDictionary& dictionary_;
   TransmitPath& tx_;
   NodeClock& clock_;
   FrameRouter& routes_;
-  uint32_t canId_ = 0x100;
+  TimeOfDay base_;
+  Microseconds baseAt_ = 0;         ///< the node's time of base_
+  Microseconds period_ = 0;         ///< of the producer (at most kLongestDelay); 0: none
+  Microseconds nextTime_ = kNever;  ///< the next TIME this node produces
+  Microseconds rebaseAt_ = kNever;  ///< the next fold of the clock of day; kNever: never set
+  uint32_t framesIgnored_ = 0;
+  uint16_t canId_ = 0x100;
   bool consumer_ = false;
   bool producer_ = false;
-  bool set_ = false;  ///< the clock of day has a value
-  TimeOfDay base_;
-  Microseconds baseAt_ = 0;  ///< the node's time of base_
-  Microseconds period_ = 0;
-  uint32_t framesIgnored_ = 0;
-  LongTimer timer_;   ///< the next TIME this node produces
-  LongTimer rebase_;  ///< the next fold of the clock of day (well within the 71 min wrap)
 };
 
 }  // namespace costa
