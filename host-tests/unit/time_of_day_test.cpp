@@ -47,6 +47,22 @@ TEST_F(TimeOfDayTest, TheClockOfDayKeepsTimeForHoursAcrossTheMicrosecondClocksWr
   EXPECT_EQ(clockOfDay(bus_.node()), timeOf(18000000, 0));
 }
 
+TEST_F(TimeOfDayTest, TimeIsRoutedWithEveryPdoValid) {
+  // RPDO3/4 and TPDO3/4 valid too: the routing table holds NMT, SYNC, SDO, LSS, TIME and 8 PDOs.
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 02 14 01 01 04 00 00
+    tx 581 [8] 60 02 14 01 00 00 00 00
+    rx 601 [8] 23 03 14 01 01 05 00 00
+    tx 581 [8] 60 03 14 01 00 00 00 00
+    rx 601 [8] 23 02 18 01 81 03 00 00
+    tx 581 [8] 60 02 18 01 00 00 00 00
+    rx 601 [8] 23 03 18 01 81 04 00 00
+    tx 581 [8] 60 03 18 01 00 00 00 00
+    rx 100 [6] 10 27 00 00 2C 01
+  )");
+  EXPECT_EQ(clockOfDay(bus_.node()), timeOf(10000, 300));
+}
+
 TEST_F(TimeOfDayTest, MalformedFramesAreIgnoredAndCounted) {
   EXPECT_TRANSCRIPT("rx 100 [6] 10 27 00 00 2C 01");
   EXPECT_TRANSCRIPT(R"(

@@ -35,7 +35,7 @@ struct NodeMemory {
   size_t emcyQueueCapacity;
   HeartbeatMonitor* heartbeatMonitors;  ///< One per sub-index of 0x1016.
   size_t heartbeatMonitorCapacity;
-  RouteEntry* routes;  ///< The frame routing table: NMT, SYNC, SDO, LSS and every PDO.
+  RouteEntry* routes;  ///< The frame routing table: NMT, SYNC, SDO, LSS, TIME and every PDO.
   size_t routeCapacity;
 };
 
@@ -63,8 +63,8 @@ struct NodeBuffers {
   static constexpr size_t kTpdos = atLeastOne(DictionaryCapacity::kTpdoCount);
   static constexpr size_t kMonitors =
       features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
-  /// NMT, SYNC, SDO, LSS, and one per PDO.
-  static constexpr size_t kRoutes = 4U + kRpdos + kTpdos;
+  /// NMT, SYNC, SDO, LSS, TIME (when compiled in), and one per PDO.
+  static constexpr size_t kRoutes = 4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos;
 
   Values values{};
   QueuedFrame tx[Extra::kTxQueueDepth]{};
