@@ -46,6 +46,7 @@ TEST(FeaturesBuild, IsTheVariantCMakeAskedFor) {
   add(features::kHeartbeatConsumer, "HEARTBEAT_CONSUMER");
   add(features::kParameterStorage, "PARAMETER_STORAGE");
   add(features::kTime, "TIME");
+  add(features::kEmcyConsumer, "EMCY_CONSUMER");
   EXPECT_EQ(compiledIn, COSTA_EXPECTED_FEATURES);
 }
 
@@ -147,6 +148,17 @@ TEST_F(FeaturesTest, TimeIsIgnoredWithoutTime) {
   EXPECT_EQ(ignored() - before, features::kTime ? 0U : 1U);
   TimeOfDay time;
   EXPECT_EQ(bus_->node().timeOfDay(&time), features::kTime);
+}
+
+TEST_F(FeaturesTest, OtherNodesEmergenciesAreIgnoredWithoutEmcyConsumer) {
+  EXPECT_EQ(play("tx 701 [1] 00\n"
+                 "rx 601 [8] 40 28 10 01 00 00 00 00  # 0x1028:01\n" +
+                 lines(features::kEmcyConsumer, "tx 581 [8] 43 28 10 01 82 00 00 00  # node 2's",
+                       "tx 581 [8] 80 28 10 01 00 00 02 06  # object does not exist")),
+            "");
+  const uint32_t before = ignored();
+  EXPECT_EQ(play("rx 082 [8] 10 81 11 00 00 00 00 00  # node 2: CAN overrun\n"), "");
+  EXPECT_EQ(ignored() - before, features::kEmcyConsumer ? 0U : 1U);
 }
 
 TEST_F(FeaturesTest, NothingIsStoredWithoutParameterStorage) {

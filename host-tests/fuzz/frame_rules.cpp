@@ -204,6 +204,18 @@ std::string checkConfiguredCanIds(const Node& node) {
       return "valid EMCY COB-ID " + hex(emcy) + " has a restricted CAN-ID";
     }
   }
+  const od::Object* consumer = dictionary.findObject(0x1028);
+  for (uint8_t sub = 1; consumer != nullptr && sub != 0U; ++sub) {
+    const od::EntryRef ref = dictionary.find(0x1028, sub);
+    if (!ref.valid()) {
+      break;
+    }
+    const uint32_t entry = u32At(dictionary, ref);
+    if ((entry & kInvalidBit) == 0U &&
+        (restrictedCanId(entry & kIdBits) || !plainStandardId(entry))) {
+      return "valid EMCY consumer entry " + hex(entry) + " has a restricted or 29-bit CAN-ID";
+    }
+  }
   if (cobIds.time.valid()) {
     const uint32_t time = u32At(dictionary, cobIds.time);
     const bool used = (time & (kTimeConsumerBit | kTimeProducerBit)) != 0U;

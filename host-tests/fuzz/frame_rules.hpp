@@ -50,7 +50,8 @@ std::string checkTransmittedFrame(const CanFrame& frame, const CanIdSet& allowed
 
 /// Empty when no COB-ID in the node's dictionary gives a configurable object a restricted
 /// CAN-ID: SYNC 0x1005 (consumed or produced), EMCY 0x1014 when valid, TIME 0x1012 when
-/// consumed or produced (nor a 29-bit one), each RPDO and TPDO
+/// consumed or produced and each valid EMCY consumer entry of 0x1028 (nor a 29-bit one), each
+/// RPDO and TPDO
 /// (0x1400..0x15FF, 0x1800..0x19FF sub-index 1) when valid (a device profile's own PDO range
 /// replaces the rule); else the first one that does. A node without node-id (0xFF) sends
 /// nothing and its $NODEID defaults mean nothing yet: always empty.

@@ -150,6 +150,10 @@ def synthetic():
         + frame_event(0x100, 5, [0x10, 0x27, 0, 0, 0x2C])
         + frame_event(0x100, 6, [0x00, 0x5C, 0x26, 0x05, 0x2C, 0x01])
         + frame_event(0x100, 6, [0xFF, 0x5B, 0x26, 0x05, 0x2C, 0x01]) + wait_event(5),
+        # Other nodes' emergencies (consumed where 0x1028 lists them), one of 7 bytes.
+        "emcy-consumer": bytes([0]) + frame_event(0x082, 8, [0x10, 0x81, 0x11, 0, 0, 0, 0, 0])
+        + frame_event(0x083, 7, [0, 0, 0, 0, 0, 0, 0])
+        + frame_event(0x084, 8, [0x20, 0x81, 0x11, 0, 0, 0, 0, 0]),
     }
 
 

@@ -46,6 +46,7 @@ struct NodeServices {
         heartbeat(dictionary, tx, clock),
         sync(dictionary, tx, emcy, clock, router),
         time(dictionary, tx, clock, router),
+        emcyConsumer(listeners, router),
         pdos(pdoContext, rpdos, 2, tpdos, 2),
         stored(dictionary, settings, listeners),
         bitTiming(settings.bitRateControl, settings.bitTiming),
@@ -60,7 +61,7 @@ struct NodeServices {
             settings.nodeId),
         services(ServiceObjects::Hooks{&emcy, &sync, &errorControl.guardingObjects(),
                                        &stored.commands(), &errorControl.consumerObjects(),
-                                       &heartbeat, &time, &pdos}) {
+                                       &heartbeat, &time, &emcyConsumer, &pdos}) {
     access.setObserver(stored.autoSave());
     pdos.bind();
     EXPECT_TRUE(listeners.add(listener));
@@ -86,6 +87,7 @@ struct NodeServices {
   HeartbeatProducer heartbeat;
   SyncService sync;
   TimeServiceChoice time;
+  EmcyConsumerChoice emcyConsumer;
   RpdoChannel rpdos[2];
   TpdoChannel tpdos[2];
   PdoEngine pdos;

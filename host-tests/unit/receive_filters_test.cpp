@@ -1,8 +1,9 @@
 // Node::receiveFilters(): the CAN-IDs a port programs into its controller's acceptance
 // filters, and receiveFiltersVersion(), which says when to program them again. Checked through
 // wire frames: every frame the filters turn away is one the node ignores.
-// Example node-id 1: SYNC 0x080, TIME 0x100, RPDO1/2 0x201/0x301 and TPDO1/2 0x181/0x281 valid
-// (RPDO3/4 and TPDO3/4 are not, by default), SDO 0x601, LSS 0x7E5 (the example has LSS).
+// Example node-id 1: SYNC 0x080, EMCY of nodes 2 and 3 consumed (0x1028), TIME 0x100, RPDO1/2
+// 0x201/0x301 and TPDO1/2 0x181/0x281 valid (RPDO3/4 and TPDO3/4 are not, by default), SDO 0x601,
+// LSS 0x7E5 (the example has LSS).
 #include <algorithm>
 #include <vector>
 
@@ -40,8 +41,8 @@ bool passes(const std::vector<CanIdFilter>& filters, uint32_t id) {
 
 TEST_F(ReceiveFilters, ListEveryServiceCanIdOnceInOrderThenTheErrorControlRange) {
   const std::vector<CanIdFilter> filters = filtersOf(bus_.node());
-  const std::vector<uint32_t> expected = {0x000, 0x080, 0x100, 0x181, 0x201,
-                                          0x281, 0x301, 0x601, 0x7E5};
+  const std::vector<uint32_t> expected = {0x000, 0x080, 0x082, 0x083, 0x100, 0x181,
+                                          0x201, 0x281, 0x301, 0x601, 0x7E5};
   EXPECT_EQ(exactIds(filters), expected);
   ASSERT_EQ(filters.size(), expected.size() + 1U);
   EXPECT_EQ(filters.back().id, 0x700U);
@@ -114,11 +115,11 @@ TEST_F(ReceiveFilters, ASmallerTableGetsWhatFitsAndTheTrueCount) {
   CanIdFilter untouched;
   untouched.id = 0x123;
   filters[2] = untouched;
-  EXPECT_EQ(bus_.node().receiveFilters(filters, 2), 10U);
+  EXPECT_EQ(bus_.node().receiveFilters(filters, 2), 12U);
   EXPECT_EQ(filters[0].id, 0x000U);
   EXPECT_EQ(filters[1].id, 0x080U);
   EXPECT_EQ(filters[2].id, 0x123U);  // untouched
-  EXPECT_EQ(bus_.node().receiveFilters(nullptr, 0), 10U);
+  EXPECT_EQ(bus_.node().receiveFilters(nullptr, 0), 12U);
 }
 
 }  // namespace

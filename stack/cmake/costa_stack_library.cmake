@@ -7,6 +7,7 @@
 #   COSTA_FEATURE_HEARTBEAT_CONSUMER   heartbeat consumer (0x1016)
 #   COSTA_FEATURE_PARAMETER_STORAGE    0x1010/0x1011, stored groups, stored LSS configuration
 #   COSTA_FEATURE_TIME                 TIME consumer and producer (0x1012)
+#   COSTA_FEATURE_EMCY_CONSUMER        EMCY consumer (0x1028)
 #
 # costa_add_stack_library(<target> [FEATURES <feature>...])
 #   A static library of the stack with exactly the listed features (names without the
@@ -23,7 +24,8 @@
 #   anyway stops at the device's static_assert.
 include_guard(GLOBAL)
 
-set(COSTA_OPTIONAL_FEATURES SDO_BLOCK LSS NODE_GUARDING HEARTBEAT_CONSUMER PARAMETER_STORAGE TIME)
+set(COSTA_OPTIONAL_FEATURES SDO_BLOCK LSS NODE_GUARDING HEARTBEAT_CONSUMER PARAMETER_STORAGE TIME
+  EMCY_CONSUMER)
 
 option(COSTA_FEATURE_SDO_BLOCK "SDO block upload and download (CiA 301)" ON)
 option(COSTA_FEATURE_LSS "LSS slave (CiA 305)" ON)
@@ -31,6 +33,7 @@ option(COSTA_FEATURE_NODE_GUARDING "Node guarding and life guarding (CiA 301)" O
 option(COSTA_FEATURE_HEARTBEAT_CONSUMER "Heartbeat consumer, object 0x1016 (CiA 301)" ON)
 option(COSTA_FEATURE_PARAMETER_STORAGE "Parameter storage, objects 0x1010/0x1011 (CiA 301)" ON)
 option(COSTA_FEATURE_TIME "TIME consumer and producer, object 0x1012 (CiA 301)" ON)
+option(COSTA_FEATURE_EMCY_CONSUMER "EMCY consumer, object 0x1028 (CiA 301)" ON)
 
 set(COSTA_ENABLED_FEATURES "")
 foreach(feature IN LISTS COSTA_OPTIONAL_FEATURES)
@@ -71,6 +74,7 @@ set(COSTA_STACK_LSS_SOURCES lss_identification.cpp lss_slave.cpp)
 set(COSTA_STACK_NODE_GUARDING_SOURCES node_guarding.cpp)
 set(COSTA_STACK_HEARTBEAT_CONSUMER_SOURCES heartbeat_consumer.cpp)
 set(COSTA_STACK_TIME_SOURCES time_service.cpp)
+set(COSTA_STACK_EMCY_CONSUMER_SOURCES emcy_consumer.cpp)
 set(COSTA_STACK_PARAMETER_STORAGE_SOURCES
   parameter_store.cpp parameter_store_layout.cpp store_commands.cpp stored_image.cpp)
 

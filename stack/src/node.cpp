@@ -19,6 +19,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       heartbeat_(dictionary_, tx_, clock_),
       sync_(dictionary_, tx_, emcy_, clock_, router_),
       time_(dictionary_, tx_, clock_, router_),
+      emcyConsumer_(listeners_, router_),
       pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
       stored_(dictionary_, settings_, listeners_),
       bitTiming_(settings_.bitRateControl, settings_.bitTiming),
@@ -33,7 +34,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
            settings_.nodeId),
       services_(ServiceObjects::Hooks{&emcy_, &sync_, &errorControl_.guardingObjects(),
                                       &stored_.commands(), &errorControl_.consumerObjects(),
-                                      &heartbeat_, &time_, &pdos_}) {
+                                      &heartbeat_, &time_, &emcyConsumer_, &pdos_}) {
   access_.setObserver(stored_.autoSave());
   pdos_.bind();
 }
@@ -93,6 +94,7 @@ NodeStatistics Node::statistics() const noexcept {
   s.hooksRefused = hooksRefused_;
   s.listenersRefused = listeners_.refused();
   s.timeFramesIgnored = time_.framesIgnored();
+  s.emcyFramesIgnored = emcyConsumer_.framesIgnored();
   return s;
 }
 

@@ -31,6 +31,14 @@ void ExampleDevice::onResetCommunication() noexcept {
   node_.dictionary().storeUnsigned(0x1018, 4, serialNumber_);
 }
 
+void ExampleDevice::onEmcyReceived(const EmcyMessage& emcy) noexcept {
+  od::ObjectDictionary& dictionary = node_.dictionary();
+  dictionary.storeUnsigned(kLastEmergency, 1, emcy.producer);
+  dictionary.storeUnsigned(kLastEmergency, 2, emcy.errorCode);
+  dictionary.storeUnsigned(kLastEmergency, 3, emcy.errorRegister);
+  dictionary.storeUnsigned(kLastEmergency, 4, dictionary.readUnsigned(kLastEmergency, 4, 0) + 1U);
+}
+
 void ExampleDevice::restartUptime() noexcept {
   secondStart_ = node_.now();
   uptime_ = 0;

@@ -13,6 +13,8 @@
 //   0x2010 Operating mode   may only be changed in pre-operational; in operational or stopped
 //                           the write aborts with 0x08000022.
 //   0x2012 Clock of day     the node's clock of day (TIME), example_clock.hpp.
+//   0x2013 Last emergency   what the EMCY consumer (0x1028) heard last: the producer's node-id,
+//          received         error code and error register, and how many emergencies it heard.
 #pragma once
 
 #include "costa/node.hpp"
@@ -26,6 +28,7 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
   static constexpr uint16_t kCommand = 0x2002;
   static constexpr uint16_t kScratchPad = 0x2008;
   static constexpr uint16_t kOperatingMode = 0x2010;
+  static constexpr uint16_t kLastEmergency = 0x2013;
   static constexpr size_t kScratchPadCapacity = size_t{12} * 1024U;
 
   /// Attaches itself to `node` (hooks and events). Call before `node.start()`. `serialNumber`
@@ -47,6 +50,7 @@ class ExampleDevice : public ObjectHook, public NodeEvents {
                         AbortCode reason) noexcept override;
   void onResetApplication() noexcept override;
   void onResetCommunication() noexcept override;
+  void onEmcyReceived(const EmcyMessage& emcy) noexcept override;
 
   /// Every hook and the listener found room in the node (its NodeStatistics count refusals).
   bool attached() const noexcept { return attached_; }

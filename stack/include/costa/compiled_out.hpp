@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/emcy_consumer.hpp"
 #include "costa/features.hpp"
 #include "costa/heartbeat_consumer.hpp"
 #include "costa/lss_slave.hpp"
@@ -258,6 +259,28 @@ class AbsentTimeService final : public AbsentObjects {
   Microseconds nextDeadline() const noexcept { return kNever; }
   uint32_t framesIgnored() const noexcept { return 0; }
 };
+
+/// EMCY consumer compiled out: no routes, 0x1028 does not exist.
+class AbsentEmcyConsumer final : public AbsentObjects {
+ public:
+  AbsentEmcyConsumer(const NodeListeners& listeners, FrameRouter& routes) noexcept {
+    (void)listeners;
+    (void)routes;
+  }
+  static void addRoutes(const od::ObjectDictionary& dictionary, FrameRouter& router) noexcept {
+    (void)dictionary;
+    (void)router;
+  }
+  bool onFrame(const CanFrame& frame, uint8_t entry) noexcept {
+    (void)frame;
+    (void)entry;
+    return false;
+  }
+  uint32_t framesIgnored() const noexcept { return 0; }
+};
+
+/// The node's EMCY consumer: the service, or its stand-in.
+using EmcyConsumerChoice = ServiceIf<features::kEmcyConsumer, EmcyConsumer, AbsentEmcyConsumer>;
 
 /// The node's TIME service: the service, or its stand-in.
 using TimeServiceChoice = ServiceIf<features::kTime, TimeService, AbsentTimeService>;

@@ -255,6 +255,7 @@ class Node {
   HeartbeatProducer heartbeat_;
   SyncService sync_;
   TimeServiceChoice time_;
+  EmcyConsumerChoice emcyConsumer_;
   PdoEngine pdos_;
   StoredParameters stored_;
   BitTimingSwitch bitTiming_;

@@ -4,6 +4,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/emcy_message.hpp"
 #include "costa/lss_slave.hpp"
 #include "costa/nmt_state.hpp"
 #include "costa/parameter_store.hpp"
@@ -40,6 +41,8 @@ class NodeEvents {
   virtual void onRpdoTimeout(uint16_t communicationIndex) noexcept { (void)communicationIndex; }
   /// A SYNC was received or produced (after synchronous PDOs were handled).
   virtual void onSync(uint8_t counter) noexcept { (void)counter; }
+  /// An emergency message on a CAN-ID the EMCY consumer (0x1028) watches.
+  virtual void onEmcyReceived(const EmcyMessage& emcy) noexcept { (void)emcy; }
   /// A monitored heartbeat (0x1016) stopped arriving / arrived again after a timeout.
   virtual void onHeartbeatTimeout(uint8_t nodeId) noexcept { (void)nodeId; }
   virtual void onHeartbeatResumed(uint8_t nodeId) noexcept { (void)nodeId; }

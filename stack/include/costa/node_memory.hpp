@@ -63,8 +63,11 @@ struct NodeBuffers {
   static constexpr size_t kTpdos = atLeastOne(DictionaryCapacity::kTpdoCount);
   static constexpr size_t kMonitors =
       features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
-  /// NMT, SYNC, SDO, LSS, TIME (when compiled in), and one per PDO.
-  static constexpr size_t kRoutes = 4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos;
+  static constexpr size_t kEmcyConsumers =
+      features::kEmcyConsumer ? DictionaryCapacity::kEmcyConsumers : 0U;
+  /// NMT, SYNC, SDO, LSS, TIME (when compiled in), one per PDO and per consumed EMCY CAN-ID.
+  static constexpr size_t kRoutes =
+      4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos + kEmcyConsumers;
 
   Values values{};
   QueuedFrame tx[Extra::kTxQueueDepth]{};

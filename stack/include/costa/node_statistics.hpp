@@ -21,6 +21,7 @@ struct NodeStatistics {
   uint32_t hooksRefused = 0;          ///< attachHook() calls refused: hook table full.
   uint32_t listenersRefused = 0;      ///< addListener() calls refused: listener table full.
   uint32_t timeFramesIgnored = 0;     ///< TIME frames not 6 bytes long, or past midnight.
+  uint32_t emcyFramesIgnored = 0;     ///< Consumed EMCY frames not 8 bytes long, or RTR.
 };
 
 }  // namespace costa

@@ -1,7 +1,7 @@
 // Which of the node's services owns an object of the communication area: the hook the stack
 // itself puts behind 0x1003, 0x1005..0x1007, 0x100C, 0x100D, 0x1010, 0x1011, 0x1012, 0x1014,
-// 0x1016, 0x1017, 0x1019 and 0x1400..0x1BFF. A switch, not a table: no RAM per object, O(1).
-// Application hooks (HookRegistry) take precedence over these.
+// 0x1016, 0x1017, 0x1019, 0x1028 and 0x1400..0x1BFF. A switch, not a table: no RAM per object,
+// O(1). Application hooks (HookRegistry) take precedence over these.
 #pragma once
 
 #include <stdint.h>
@@ -15,19 +15,20 @@ class ServiceObjects {
  public:
   /// The hooks of the services (a compiled-out service's stand-in answers 0x06020000).
   struct Hooks {
-    ObjectHook* emcy;       ///< 0x1003, 0x1014
-    ObjectHook* sync;       ///< 0x1005..0x1007, 0x1019
-    ObjectHook* guarding;   ///< 0x100C, 0x100D
-    ObjectHook* store;      ///< 0x1010, 0x1011
-    ObjectHook* consumer;   ///< 0x1016
-    ObjectHook* heartbeat;  ///< 0x1017
-    ObjectHook* time;       ///< 0x1012
-    ObjectHook* pdos;       ///< 0x1400..0x1BFF
+    ObjectHook* emcy;          ///< 0x1003, 0x1014
+    ObjectHook* sync;          ///< 0x1005..0x1007, 0x1019
+    ObjectHook* guarding;      ///< 0x100C, 0x100D
+    ObjectHook* store;         ///< 0x1010, 0x1011
+    ObjectHook* consumer;      ///< 0x1016
+    ObjectHook* heartbeat;     ///< 0x1017
+    ObjectHook* time;          ///< 0x1012
+    ObjectHook* emcyConsumer;  ///< 0x1028
+    ObjectHook* pdos;          ///< 0x1400..0x1BFF
   };
 
   explicit ServiceObjects(const Hooks& hooks) noexcept
       : hooks_{{nullptr, hooks.emcy, hooks.sync, hooks.guarding, hooks.store, hooks.consumer,
-                hooks.heartbeat, hooks.time},
+                hooks.heartbeat, hooks.time, hooks.emcyConsumer},
                hooks.pdos} {}
 
   /// The hook of the service that owns `index` when that service refines reads (prepareRead:
@@ -43,7 +44,7 @@ class ServiceObjects {
     return (kReaders & (1U << owner)) != 0U ? hooks_.of[owner] : nullptr;
   }
 
-  /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x101F.
+  /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x102F.
   ObjectHook* find(uint16_t index) const noexcept {
     if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
       return hooks_.pdos;
@@ -58,16 +59,19 @@ class ServiceObjects {
   static constexpr uint32_t kGuardingReader = features::kNodeGuarding ? 0U : 1U << 3U;
   static constexpr uint32_t kConsumerReader = features::kHeartbeatConsumer ? 0U : 1U << 5U;
   static constexpr uint32_t kTimeReader = features::kTime ? 0U : 1U << 7U;
+  static constexpr uint32_t kEmcyConsumerReader = features::kEmcyConsumer ? 0U : 1U << 8U;
   // cppcheck-suppress badBitmaskCheck ; a service's bit is zero when the service is compiled in
   static constexpr uint32_t kReaders =
-      kStoreReader | kGuardingReader | kConsumerReader | kTimeReader;
+      kStoreReader | kGuardingReader | kConsumerReader | kTimeReader | kEmcyConsumerReader;
   /// Which service owns 0x1000 + n: 0 none, else a position in Table::of.
-  static constexpr uint8_t kOwners[0x20] = {
+  static constexpr uint8_t kOwners[0x30] = {
       0, 0, 0, 1, 0, 2, 2, 2, 0, 0, 0, 0, 3, 3, 0, 0,  // 0x1003 EMCY; 0x1005-7 SYNC; 0x100C/D
       4, 4, 7, 0, 1, 0, 5, 6, 0, 2, 0, 0, 0, 0, 0, 0,  // 0x1010/1 store; 0x1012 TIME; 0x1014; ...
+      0, 0, 0, 0, 0, 0, 0, 0, 8, 0, 0, 0, 0, 0, 0, 0,  // 0x1028 EMCY consumer
   };
   struct Table {
-    ObjectHook* of[8];  ///< [0] null, emcy, sync, guarding, store, consumer, heartbeat, time
+    ObjectHook* of[9];  ///< [0] null, emcy, sync, guarding, store, consumer, heartbeat, time,
+                        ///< EMCY consumer
     ObjectHook* pdos;
   };
   Table hooks_;

@@ -1,0 +1,68 @@
+#include "costa/emcy_consumer.hpp"
+
+#include "costa/cob_ids.hpp"
+#include "costa/node_events.hpp"
+#include "costa/od/little_endian.hpp"
+
+namespace costa {
+namespace {
+
+constexpr uint32_t kNotValid = 0x80000000U;
+constexpr uint32_t kExtended = 0x20000000U;
+constexpr uint32_t kReserved = 0x1FFFF800U;
+constexpr uint8_t kLength = 8;
+
+}  // namespace
+
+void EmcyConsumer::addRoutes(const od::ObjectDictionary& dictionary, FrameRouter& router) noexcept {
+  const od::Object* object = dictionary.findObject(kIndex);
+  if (object == nullptr) {
+    return;
+  }
+  const auto count = static_cast<uint8_t>(dictionary.readUnsigned(kIndex, 0, 0));
+  for (uint8_t sub = 1; sub != 0U && sub <= count; ++sub) {
+    const auto value = static_cast<uint32_t>(dictionary.readUnsigned(kIndex, sub, kNotValid));
+    if ((value & (kNotValid | kExtended | kReserved)) == 0U) {
+      (void)router.add(static_cast<uint16_t>(value & 0x7FFU), Route::kEmcy, sub);
+    }
+  }
+}
+
+bool EmcyConsumer::onFrame(const CanFrame& frame, uint8_t entry) noexcept {
+  if (frame.rtr || frame.dlc != kLength) {
+    ++framesIgnored_;
+    return false;
+  }
+  EmcyMessage emcy;
+  emcy.canId = static_cast<uint16_t>(frame.id);
+  const uint32_t offset = frame.id - cob::kEmcyBase;  // 1..127: the pre-defined 0x80 + node-id
+  emcy.producer = offset >= 1U && offset <= 127U ? static_cast<uint8_t>(offset) : 0U;
+  emcy.entry = entry;
+  emcy.errorCode = loadU16(frame.data);
+  emcy.errorRegister = frame.data[2];
+  for (size_t i = 0; i < sizeof(emcy.manufacturer); ++i) {
+    emcy.manufacturer[i] = frame.data[3U + i];
+  }
+  listeners_.notify([&emcy](NodeEvents& listener) { listener.onEmcyReceived(emcy); });
+  return true;
+}
+
+AbortCode EmcyConsumer::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                              const uint8_t* data, size_t length) noexcept {
+  if (ref.subIndex() != 0U && length == 4U) {
+    const uint32_t value = loadU32(data);
+    if ((value & (kExtended | kReserved)) != 0U) {
+      return AbortCode::kInvalidValue;  // 11-bit CAN-IDs only
+    }
+    if ((value & kNotValid) == 0U && cob::isRestrictedCanId(value & 0x7FFU)) {
+      return AbortCode::kInvalidValue;  // CiA 301 7.3.5
+    }
+  }
+  const AbortCode written = dictionary.write(ref, data, length);
+  if (written == AbortCode::kNone) {
+    routes_.invalidate();
+  }
+  return written;
+}
+
+}  // namespace costa
