@@ -50,6 +50,7 @@ set(COSTA_STACK_CORE_SOURCES
   error_control.cpp
   frame_router.cpp
   heartbeat_producer.cpp
+  indicators.cpp
   lss_bridge.cpp
   nmt_slave.cpp
   nmt_state_machine.cpp

@@ -106,9 +106,13 @@ void ErrorControl::onControllerEvent(CanControllerEvent event) noexcept {
       emcy_.signal(kEmcyRxOverrun, kErrorCommunication);
       break;
     case CanControllerEvent::kErrorPassive:
+      errorPassive_ = true;
       emcy_.raise(kEmcyErrorPassive, 0, kErrorCommunication);
       break;
-    case CanControllerEvent::kErrorActive: emcy_.clear(kEmcyErrorPassive, 0); break;
+    case CanControllerEvent::kErrorActive:
+      errorPassive_ = false;
+      emcy_.clear(kEmcyErrorPassive, 0);
+      break;
     case CanControllerEvent::kBusOff:
       if (!busOff_) {
         busOff_ = true;
@@ -121,6 +125,7 @@ void ErrorControl::onControllerEvent(CanControllerEvent event) noexcept {
     case CanControllerEvent::kBusOffRecovered:
       if (busOff_) {
         busOff_ = false;
+        errorPassive_ = false;
         tx_.setGate(TransmitPath::kBusOff, false);
         emcy_.clear(kEmcyErrorPassive, 0);
         emcy_.signal(kEmcyBusOffRecovered, kErrorCommunication);

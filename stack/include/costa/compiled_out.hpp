@@ -139,6 +139,7 @@ class AbsentLssSlave {
   void process(Microseconds now) noexcept { (void)now; }
   Microseconds nextDeadline() const noexcept { return kNever; }
   bool transmissionSuspended() const noexcept { return false; }
+  bool configurationState() const noexcept { return false; }
   uint8_t activeNodeId() const noexcept { return cob::kLssUnconfigured; }
   uint8_t pendingNodeId() const noexcept { return cob::kLssUnconfigured; }
   bool valid() const noexcept { return true; }

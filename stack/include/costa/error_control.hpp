@@ -70,6 +70,8 @@ class ErrorControl {
   /// applies), recovery from bus-off (transmission resumes, EMCY 0x8140).
   void onControllerEvent(CanControllerEvent event) noexcept;
   bool busOff() const noexcept { return busOff_; }
+  /// The controller reported error passive (kErrorPassive) and not yet error active again.
+  bool errorPassive() const noexcept { return errorPassive_; }
 
   /// A communication error (life guarding, heartbeat, bus-off): 0x1029 sub-index 1 decides.
   void onCommunicationError() noexcept;
@@ -99,6 +101,7 @@ class ErrorControl {
   NodeGuardingService guarding_;
   HeartbeatConsumerService consumer_;
   bool busOff_ = false;
+  bool errorPassive_ = false;
   uint32_t rxOverruns_ = 0;
   uint32_t busOffs_ = 0;
 };
