@@ -1,0 +1,104 @@
+#include "local_bus.hpp"
+
+namespace costa::host {
+
+CanTransmitter& LocalBus::nextPort() {
+  ports_.push_back(std::make_unique<Port>(*this, ports_.size()));
+  return *ports_.back();
+}
+
+void LocalBus::attach(std::unique_ptr<DeviceTarget> target) {
+  tracer_.attach(*target);
+  Slot slot;
+  slot.target = std::move(target);
+  nodes_.push_back(std::move(slot));
+}
+
+bool LocalBus::transmit(size_t sender, const CanFrame& frame) {
+  if (!socket_.tryTransmit(frame)) {
+    return false;
+  }
+  tracer_.sent(sender, frame);
+  if (nodes_.size() > 1U) {
+    sent_.push_back(Sent{sender, frame});
+  }
+  return true;
+}
+
+void LocalBus::deliver(size_t index, const CanFrame& frame, Microseconds now) {
+  Slot& slot = nodes_[index];
+  Node& node = slot.target->node();
+  const uint32_t ignored = node.statistics().framesIgnored;
+  slot.target->onFrame(frame, now);
+  if (node.statistics().framesIgnored == ignored) {
+    slot.due = true;
+  }
+}
+
+void LocalBus::start(Microseconds now) {
+  for (Slot& slot : nodes_) {
+    slot.target->start(now);
+    slot.due = true;
+  }
+}
+
+void LocalBus::receive(const CanFrame& frame, Microseconds now) {
+  tracer_.received(frame);
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    deliver(i, frame, now);
+  }
+}
+
+void LocalBus::controllerEvent(CanControllerEvent event, Microseconds now) {
+  for (Slot& slot : nodes_) {
+    slot.target->node().onControllerEvent(event, now);
+    slot.due = true;
+  }
+}
+
+Microseconds LocalBus::process(Microseconds now) {
+  for (;;) {
+    while (!sent_.empty()) {
+      const Sent sent = sent_.front();
+      sent_.pop_front();
+      for (size_t i = 0; i < nodes_.size(); ++i) {
+        if (i != sent.sender) {
+          deliver(i, sent.frame, now);
+        }
+      }
+    }
+    for (Slot& slot : nodes_) {
+      if (slot.due || reached(now, slot.deadline) || slot.target->node().txPending()) {
+        slot.due = false;
+        slot.deadline = slot.target->process(now);
+      }
+    }
+    if (sent_.empty()) {
+      break;
+    }
+  }
+  Microseconds earliestDeadline = kNever;
+  for (const Slot& slot : nodes_) {
+    earliestDeadline = earliest(earliestDeadline, slot.deadline);
+  }
+  return earliestDeadline;
+}
+
+bool LocalBus::txPending() const {
+  for (const Slot& slot : nodes_) {
+    if (slot.target->node().txPending()) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void LocalBus::flushTx() {
+  for (Slot& slot : nodes_) {
+    if (slot.target->node().txPending()) {
+      slot.target->node().flushTx();
+    }
+  }
+}
+
+}  // namespace costa::host
