@@ -27,7 +27,7 @@ bool LocalBus::transmit(size_t sender, const CanFrame& frame) {
 
 void LocalBus::deliver(size_t index, const CanFrame& frame, Microseconds now) {
   Slot& slot = nodes_[index];
-  Node& node = slot.target->node();
+  const Node& node = slot.target->node();
   const uint32_t ignored = node.statistics().framesIgnored;
   slot.target->onFrame(frame, now);
   if (node.statistics().framesIgnored == ignored) {

@@ -62,7 +62,7 @@ class LocalBus {
     size_t index_;
   };
   struct Sent {
-    size_t sender;
+    size_t sender = 0;
     CanFrame frame;
   };
   struct Slot {

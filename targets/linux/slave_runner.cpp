@@ -58,7 +58,10 @@ timespec waitTime(Microseconds deadline, Microseconds now, bool txPending) {
   if (wait > limit) {
     wait = limit;
   }
-  return timespec{static_cast<time_t>(wait / 1000000U), static_cast<long>(wait % 1000000U) * 1000L};
+  timespec result{};
+  result.tv_sec = static_cast<time_t>(wait / 1000000U);
+  result.tv_nsec = static_cast<decltype(result.tv_nsec)>(wait % 1000000U) * 1000;
+  return result;
 }
 
 /// Lets SIGINT and SIGTERM stop the loop. They are blocked except while the loop waits (in
@@ -158,7 +161,7 @@ std::string control(LocalBus& bus, const std::string& command) {
   const size_t space = command.find(' ');
   const std::string nodeText = command.substr(1, space == std::string::npos ? space : space - 1U);
   char* end = nullptr;
-  const unsigned long nodeId = std::strtoul(nodeText.c_str(), &end, 0);
+  const uint64_t nodeId = std::strtoull(nodeText.c_str(), &end, 0);
   if (nodeText.empty() || *end != '\0') {
     return "invalid node-id '" + nodeText + "'";
   }

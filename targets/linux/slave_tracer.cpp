@@ -23,7 +23,7 @@ void SlaveTracer::sent(size_t index, const CanFrame& frame) {
 
 void SlaveTracer::received(const CanFrame& frame) {
   if (enabled_) {
-    frameLine("rx", nodes_.size() == 1U ? &nodes_[0] : addressed(frame), frame);
+    frameLine("rx", nodes_.size() == 1U ? nodes_.data() : addressed(frame), frame);
   }
 }
 
