@@ -1,9 +1,11 @@
 // Several nodes in one costa-slave on vcan: their boot-ups and SDO servers, the manual's
 // interpolation (M-series 5.10.3) with three joints moved by one SYNC, a heartbeat consumer of
 // one node watching another node of the process, an LSS Fastscan that tells two unconfigured
-// nodes apart by their serial numbers, and the command line's errors.
+// nodes apart by their serial numbers, a storage file per node, and the command line's errors.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <stdlib.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <set>
@@ -171,6 +173,45 @@ TEST(NetworkOnVcan, FastscanFindsTwoUnconfiguredNodesOneAfterTheOther) {
   EXPECT_EQ(serials, (std::set<uint32_t>{1, 2}));  // the K-th node given has serial number K
   LssIdentity none;
   EXPECT_FALSE(master.fastscan(&none));  // nobody unconfigured is left
+  EXPECT_EQ(bus.slave().stop(SIGTERM), 0) << bus.slave().output();
+}
+
+TEST(NetworkOnVcan, StorageDirectoryKeepsOneFilePerNode) {
+  char directory[] = "/tmp/costa-network-XXXXXX";
+  const char* made = ::mkdtemp(directory);
+  ASSERT_NE(made, nullptr);
+  const std::string storage = std::string(made) + "/nodes";  // created by costa-slave
+  const SlaveNodes nodes{{"example@1", "example@2"}};
+  {
+    SocketBus bus(nodes, {"--storage", storage});
+    ASSERT_EQ(bus.error(), "");
+    EXPECT_EQ(playText(R"(
+      tx 701 [1] 00
+      tx 702 [1] 00
+      rx 602 [8] 23 00 20 00 20 4E 00 00   # node 2: setpoint 20000
+      tx 582 [8] 60 00 20 00 00 00 00 00
+      rx 602 [8] 23 10 10 01 73 61 76 65   # "save"
+      tx 582 [8] 60 10 10 01 00 00 00 00
+    )",
+                       bus, kSocketReceiveTimeoutMs),
+              "");
+    EXPECT_EQ(bus.slave().stop(SIGTERM), 0) << bus.slave().output();
+  }
+  // The second node's file: written at its save (the first node saved nothing: no file yet).
+  EXPECT_EQ(::access((storage + "/example-2.bin").c_str(), F_OK), 0);
+  EXPECT_NE(::access((storage + "/example-1.bin").c_str(), F_OK), 0);
+  SocketBus bus(nodes, {"--storage", storage});
+  ASSERT_EQ(bus.error(), "");
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    tx 702 [1] 00
+    rx 602 [8] 40 00 20 00 00 00 00 00
+    tx 582 [8] 43 00 20 00 20 4E 00 00     # node 2's saved value
+    rx 601 [8] 40 00 20 00 00 00 00 00
+    tx 581 [8] 43 00 20 00 E8 03 00 00     # node 1 saved nothing: default 1000
+  )",
+                     bus, kSocketReceiveTimeoutMs),
+            "");
   EXPECT_EQ(bus.slave().stop(SIGTERM), 0) << bus.slave().output();
 }
 

@@ -16,6 +16,7 @@ void LocalBus::attach(std::unique_ptr<DeviceTarget> target) {
 
 bool LocalBus::transmit(size_t sender, const CanFrame& frame) {
   if (!socket_.tryTransmit(frame)) {
+    nodes_[sender].refused = true;
     return false;
   }
   tracer_.sent(sender, frame);
@@ -56,26 +57,28 @@ void LocalBus::controllerEvent(CanControllerEvent event, Microseconds now) {
   }
 }
 
-Microseconds LocalBus::process(Microseconds now) {
-  for (;;) {
-    while (!sent_.empty()) {
-      const Sent sent = sent_.front();
-      sent_.pop_front();
-      for (size_t i = 0; i < nodes_.size(); ++i) {
-        if (i != sent.sender) {
-          deliver(i, sent.frame, now);
-        }
+void LocalBus::runDue(Microseconds now) {
+  for (Slot& slot : nodes_) {
+    if (slot.due || slot.refused || reached(now, slot.deadline)) {
+      slot.due = false;
+      slot.deadline = slot.target->process(now);
+      slot.refused = slot.target->node().txPending();
+    }
+  }
+}
+
+Microseconds LocalBus::process() {
+  runDue(now());
+  while (!sent_.empty()) {
+    const Sent sent = sent_.front();
+    sent_.pop_front();
+    const Microseconds time = now();
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+      if (i != sent.sender) {
+        deliver(i, sent.frame, time);
       }
     }
-    for (Slot& slot : nodes_) {
-      if (slot.due || reached(now, slot.deadline) || slot.target->node().txPending()) {
-        slot.due = false;
-        slot.deadline = slot.target->process(now);
-      }
-    }
-    if (sent_.empty()) {
-      break;
-    }
+    runDue(now());
   }
   Microseconds earliestDeadline = kNever;
   for (const Slot& slot : nodes_) {
@@ -86,7 +89,7 @@ Microseconds LocalBus::process(Microseconds now) {
 
 bool LocalBus::txPending() const {
   for (const Slot& slot : nodes_) {
-    if (slot.target->node().txPending()) {
+    if (slot.refused) {
       return true;
     }
   }
@@ -95,8 +98,9 @@ bool LocalBus::txPending() const {
 
 void LocalBus::flushTx() {
   for (Slot& slot : nodes_) {
-    if (slot.target->node().txPending()) {
+    if (slot.refused) {
       slot.target->node().flushTx();
+      slot.refused = slot.target->node().txPending();
     }
   }
 }

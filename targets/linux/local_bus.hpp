@@ -5,8 +5,10 @@
 // transmit never re-enters another node).
 //
 // Event-driven: each node's next deadline is kept; process() runs only the nodes whose deadline
-// has come or that used a frame since their last run. A frame a node ignores
-// (statistics().framesIgnored) leaves it alone.
+// has come, that used a frame since their last run, or whose frames the socket refused. A frame
+// a node ignores (statistics().framesIgnored) leaves it alone. Due nodes run before the next
+// queued frame is delivered (the clock is read again after each), so a node's timer waits for
+// at most one delivery to every node, not for a whole burst of them.
 #pragma once
 
 #include <stddef.h>
@@ -15,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+#include "costa/port/linux/monotonic_clock.hpp"
 #include "costa/port/linux/socketcan_port.hpp"
 #include "device_target.hpp"
 #include "slave_tracer.hpp"
@@ -23,7 +26,9 @@ namespace costa::host {
 
 class LocalBus {
  public:
-  LocalBus(port::SocketCanPort& socket, SlaveTracer& tracer) : socket_(socket), tracer_(tracer) {}
+  /// The nodes' time is the low 32 bits of `clock`.
+  LocalBus(port::SocketCanPort& socket, SlaveTracer& tracer, port::LinuxMonotonicClock& clock)
+      : socket_(socket), tracer_(tracer), clock_(clock) {}
 
   /// The transmitter of the next node (index nodeCount() at attach()). Stable address.
   CanTransmitter& nextPort();
@@ -41,9 +46,9 @@ class LocalBus {
   void controllerEvent(CanControllerEvent event, Microseconds now);
   /// Node `index` must run at the next process() (a control command changed it).
   void touch(size_t index) { nodes_[index].due = true; }
-  /// Delivers the frames the nodes sent and runs the nodes that are due, until no frame waits;
-  /// returns the earliest deadline of all nodes.
-  Microseconds process(Microseconds now);
+  /// Runs the nodes that are due and delivers the frames the nodes sent, one after the other,
+  /// until no frame waits; returns the earliest deadline of all nodes.
+  Microseconds process();
   /// Some node holds frames the interface refused.
   bool txPending() const;
   /// Offers the refused frames again.
@@ -69,14 +74,19 @@ class LocalBus {
     std::unique_ptr<DeviceTarget> target;
     Microseconds deadline = 0;
     bool due = true;
+    bool refused = false;  ///< the socket refused a frame: the node holds it
   };
 
   bool transmit(size_t sender, const CanFrame& frame);
   /// Hands `frame` to node `index`; it is due when it used the frame.
   void deliver(size_t index, const CanFrame& frame, Microseconds now);
+  /// Runs every node that is due at `now`.
+  void runDue(Microseconds now);
+  Microseconds now() const { return static_cast<Microseconds>(clock_.nowMicroseconds()); }
 
   port::SocketCanPort& socket_;
   SlaveTracer& tracer_;
+  port::LinuxMonotonicClock& clock_;
   std::vector<std::unique_ptr<Port>> ports_;
   std::vector<Slot> nodes_;
   std::deque<Sent> sent_;

@@ -200,7 +200,7 @@ int runSlave(const SlaveOptions& options) {
   port::LinuxMonotonicClock clock;
   SlaveTracer tracer(options.trace, options.nodes.size() > 1U, clock);
   TracedBitRate bitRate(socket, tracer);
-  LocalBus bus(socket, tracer);
+  LocalBus bus(socket, tracer, clock);
   if (!createNodes(options, bus, bitRate, &error)) {
     std::fprintf(stderr, "costa-slave: %s\n", error.c_str());
     return 1;
@@ -216,7 +216,7 @@ int runSlave(const SlaveOptions& options) {
   std::fprintf(stderr, "costa-slave: %s\n", describeNodes(options, bus).c_str());
 
   while (stopRequested == 0) {
-    const Microseconds deadline = bus.process(nodeTime(clock));
+    const Microseconds deadline = bus.process();
     const timespec wait = waitTime(deadline, nodeTime(clock), bus.txPending());
     pollfd descriptors[2] = {{socket.fd(), POLLIN, 0}, {controlSocket.fd(), POLLIN, 0}};
     const nfds_t count = controlSocket.fd() >= 0 ? 2U : 1U;
