@@ -1,5 +1,7 @@
 #include "local_bus.hpp"
 
+#include <algorithm>
+
 namespace costa::host {
 
 CanTransmitter& LocalBus::nextPort() {
@@ -88,12 +90,7 @@ Microseconds LocalBus::process() {
 }
 
 bool LocalBus::txPending() const {
-  for (const Slot& slot : nodes_) {
-    if (slot.refused) {
-      return true;
-    }
-  }
-  return false;
+  return std::any_of(nodes_.begin(), nodes_.end(), [](const Slot& slot) { return slot.refused; });
 }
 
 void LocalBus::flushTx() {
