@@ -13,19 +13,31 @@
 namespace costa::test {
 
 SocketBus::SocketBus(const std::string& device, int nodeId, const std::vector<std::string>& extra) {
+  std::vector<std::string> arguments;
+  if (nodeId >= 0) {
+    arguments.insert(arguments.end(), {"--node-id", std::to_string(nodeId)});
+  }
+  arguments.insert(arguments.end(), extra.begin(), extra.end());
+  arguments.push_back(device);
+  start(arguments);
+}
+
+SocketBus::SocketBus(const SlaveNodes& nodes, const std::vector<std::string>& extra) {
+  std::vector<std::string> arguments = extra;
+  arguments.insert(arguments.end(), nodes.nodes.begin(), nodes.nodes.end());
+  start(arguments);
+}
+
+void SocketBus::start(const std::vector<std::string>& arguments) {
   if (!socket_.open(testInterface(), &error_)) {
     return;
   }
   static std::atomic<int> counter{0};
   controlPath_ = "/tmp/costa-control-" + std::to_string(::getpid()) + "-" +
                  std::to_string(counter.fetch_add(1));
-  std::vector<std::string> arguments = {"--iface", testInterface(), "--control", controlPath_};
-  if (nodeId >= 0) {
-    arguments.insert(arguments.end(), {"--node-id", std::to_string(nodeId)});
-  }
-  arguments.insert(arguments.end(), extra.begin(), extra.end());
-  arguments.push_back(device);
-  slave_ = std::make_unique<SlaveProcess>(arguments);
+  std::vector<std::string> all = {"--iface", testInterface(), "--control", controlPath_};
+  all.insert(all.end(), arguments.begin(), arguments.end());
+  slave_ = std::make_unique<SlaveProcess>(all);
 }
 
 void SocketBus::send(const CanFrame& frame) {

@@ -12,12 +12,19 @@
 
 namespace costa::test {
 
+/// Several nodes of one costa-slave: DEVICE[@NODE-ID] each.
+struct SlaveNodes {
+  std::vector<std::string> nodes;
+};
+
 class SocketBus : public TranscriptBus {
  public:
   /// Opens the test socket first (so the boot-up frame is seen), then starts costa-slave with
   /// `--iface <testInterface()> --node-id <nodeId> <extra...> <device>`; without `--node-id`
   /// when `nodeId` is negative (the device's own or stored node-id).
   SocketBus(const std::string& device, int nodeId, const std::vector<std::string>& extra = {});
+  /// Starts one costa-slave running `nodes`: `--iface <testInterface()> <extra...> <nodes...>`.
+  explicit SocketBus(const SlaveNodes& nodes, const std::vector<std::string>& extra = {});
 
   /// Empty when the bus is usable, else why not.
   const std::string& error() const { return error_; }
@@ -36,6 +43,8 @@ class SocketBus : public TranscriptBus {
   }
 
  private:
+  void start(const std::vector<std::string>& arguments);
+
   RawCanSocket socket_;
   std::unique_ptr<SlaveProcess> slave_;
   std::string controlPath_;

@@ -26,7 +26,10 @@ TEST(SlaveOptions, DefaultsAndEveryDocumentedOption) {
   EXPECT_EQ(options.nodeId, 32);
   EXPECT_EQ(options.storagePath, "/tmp/x");
   EXPECT_TRUE(options.trace);
-  EXPECT_EQ(options.device, "example");
+  ASSERT_EQ(options.nodes.size(), 1U);
+  EXPECT_EQ(options.nodes[0].device, "example");
+  EXPECT_EQ(options.nodes[0].nodeId, 32);
+  EXPECT_EQ(nodeStoragePath(options, 0), "/tmp/x");  // one node: the file itself
   ASSERT_TRUE(parse({"example", "--node-id", "127"}, &options, &error));
   EXPECT_EQ(options.nodeId, 127);
   ASSERT_TRUE(parse({"example", "--node-id", "0xFF"}, &options, &error));  // LSS only
@@ -70,6 +73,57 @@ TEST(SlaveOptions, RefusesANodeIdTheDeviceDoesNotTake) {
   ASSERT_TRUE(parse({"santeng", "--node-id", "126"}, &options, &error)) << error;
   EXPECT_EQ(options.nodeId, 126);
   ASSERT_TRUE(parse({"--node-id", "127", "example"}, &options, &error)) << error;
+}
+
+TEST(SlaveOptions, SeveralNodesEachWithItsNodeId) {
+  SlaveOptions options;
+  std::string error;
+  ASSERT_TRUE(parse({"--storage", "/tmp/d", "solo@1", "solo@2", "gra@0x10", "m-series@3",
+                     "example@255", "gra@255"},
+                    &options, &error))
+      << error;
+  ASSERT_EQ(options.nodes.size(), 6U);
+  EXPECT_EQ(options.nodes[0].device, "solo");
+  EXPECT_EQ(options.nodes[0].nodeId, 1);
+  EXPECT_EQ(options.nodes[2].nodeId, 16);
+  EXPECT_EQ(options.nodes[3].device, "m-series");
+  EXPECT_EQ(options.nodes[3].nodeId, 3);
+  EXPECT_EQ(options.nodes[5].nodeId, 255);
+  // One file per node, named by the device's name (not its alias) and its place in the list.
+  EXPECT_EQ(nodeStoragePath(options, 0), "/tmp/d/solo-1.bin");
+  EXPECT_EQ(nodeStoragePath(options, 3), "/tmp/d/mseries-4.bin");
+  EXPECT_EQ(nodeStoragePath(options, 5), "/tmp/d/gra-6.bin");
+  // A device without @ takes --node-id, else its own node-id (the example's is 1).
+  ASSERT_TRUE(parse({"--node-id", "9", "example", "solo@1"}, &options, &error)) << error;
+  EXPECT_EQ(options.nodes[0].nodeId, 9);
+  ASSERT_TRUE(parse({"example", "solo@2"}, &options, &error)) << error;
+  EXPECT_EQ(options.nodes[0].nodeId, -1);
+}
+
+TEST(SlaveOptions, RejectsDuplicateNodeIdsTooManyNodesAndUnknownDevices) {
+  SlaveOptions options;
+  std::string error;
+  EXPECT_FALSE(parse({"example@1", "solo@2", "gra@1"}, &options, &error));
+  EXPECT_EQ(error, "node-id 1 given twice (gra): every node needs its own");
+  EXPECT_FALSE(parse({"example", "solo"}, &options, &error));  // both have node-id 1
+  EXPECT_EQ(error, "node-id 1 given twice (solo): every node needs its own");
+  EXPECT_FALSE(parse({"example@3", "toaster@4"}, &options, &error));
+  EXPECT_EQ(error.rfind("unknown device 'toaster' (one of: ", 0), 0U) << error;
+  EXPECT_FALSE(parse({"example@128"}, &options, &error));
+  EXPECT_EQ(error,
+            "invalid node-id '128' in 'example@128': expected 1..127 (or 255: unconfigured, LSS "
+            "only)");
+  EXPECT_FALSE(parse({"santeng@127"}, &options, &error));
+  EXPECT_EQ(error, "invalid node-id 127 for santeng: it takes 1..126");
+  std::vector<std::string> many;
+  for (int i = 1; i <= 127; ++i) {
+    many.push_back("example@" + std::to_string(i));
+  }
+  ASSERT_TRUE(parse(many, &options, &error)) << error;
+  many.push_back("example@255");
+  EXPECT_FALSE(parse(many, &options, &error));
+  EXPECT_EQ(error, "128 nodes given: at most 127 fit on one bus");
+  EXPECT_TRUE(parse({"example@255", "gra@255", "grn@255"}, &options, &error)) << error;
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// costa-slave: a Costa device on a SocketCAN interface.
+// costa-slave: Costa devices (one or several nodes) on a SocketCAN interface.
 #include <cstdio>
 #include <string>
 #include <vector>

@@ -28,10 +28,10 @@ std::vector<DeviceEntry> listedDevices() {
   std::vector<DeviceEntry> table;
   devices::forEachDevice([&table](auto device) {
     using Composition = typename decltype(device)::Composition;
-    table.push_back(DeviceEntry{device.name, Composition::kSummary,
-                                aliasOf<Composition>(WithAlias{}), Composition::settings().lss,
-                                devices::highestNodeId<Composition>(), Composition::kStorageBytes,
-                                &build<Composition>});
+    table.push_back(DeviceEntry{
+        device.name, Composition::kSummary, aliasOf<Composition>(WithAlias{}),
+        Composition::settings().lss, Composition::settings().nodeId,
+        devices::highestNodeId<Composition>(), Composition::kStorageBytes, &build<Composition>});
   });
   return table;
 }
@@ -78,7 +78,12 @@ std::unique_ptr<DeviceTarget> createDevice(const DeviceEntry& device, CanTransmi
   config.nodeId = static_cast<uint8_t>(config.nodeIdGiven ? options.nodeId : 0);
   config.storage = storage.get();
   config.bitRateControl = options.bitRate;
-  return device.build(can, config, std::move(storage));
+  std::unique_ptr<DeviceTarget> target = device.build(can, config, std::move(storage));
+  if (options.serialNumber != 0U && !target->overrideSerialNumber(options.serialNumber)) {
+    *error = std::string(device.name) + ": no room for a listener setting its serial number";
+    return nullptr;
+  }
+  return target;
 }
 
 }  // namespace costa::host

@@ -20,6 +20,25 @@ struct TargetOptions {
   std::string storagePath;  ///< --storage, or empty.
   /// The CAN port's bit rate, for NodeSettings::bitRateControl (null: none).
   CanBitRateControl* bitRate = nullptr;
+  /// The serial number in 0x1018:04 from every reset communication on, or 0: the device's own.
+  uint32_t serialNumber = 0;
+};
+
+/// Writes a serial number into 0x1018:04 at every reset communication, after the device's own
+/// listeners (which may write theirs): the identity LSS reads is then this one.
+class SerialNumberOverride final : public NodeEvents {
+ public:
+  void assign(Node& node, uint32_t serialNumber) {
+    node_ = &node;
+    serialNumber_ = serialNumber;
+  }
+  void onResetCommunication() noexcept override {
+    (void)node_->dictionary().storeUnsigned(0x1018, 4, serialNumber_);
+  }
+
+ private:
+  Node* node_ = nullptr;
+  uint32_t serialNumber_ = 0;
 };
 
 class DeviceTarget {
@@ -41,6 +60,16 @@ class DeviceTarget {
   virtual std::string control(const std::string& command) = 0;
   /// Every hook and listener of the device's behaviour found room in its node.
   virtual bool attached() const = 0;
+
+  /// Gives the node `serialNumber` in 0x1018:04 (call before start()). False when the node's
+  /// listener table has no room left.
+  bool overrideSerialNumber(uint32_t serialNumber) {
+    serialNumber_.assign(node(), serialNumber);
+    return node().addListener(serialNumber_);
+  }
+
+ private:
+  SerialNumberOverride serialNumber_;
 };
 
 /// Adapts a device composition (targets/devices.hpp: start, onFrame, process, node, control,

@@ -55,49 +55,150 @@ std::string* textOption(const std::string& argument, SlaveOptions& options) {
   return nullptr;
 }
 
-/// The device of complete options (not --help, --list-devices) exists.
-bool checkDevice(const SlaveOptions& options, std::string* error) {
-  if (options.device.empty()) {
-    *error = "no DEVICE given (one of: " + deviceNames() + ")";
+/// Splits DEVICE[@NODE-ID]. False with one line in `error` when the node-id is invalid.
+bool parseNodeArgument(const std::string& argument, int defaultNodeId, NodeArgument* node,
+                       std::string* error) {
+  const size_t at = argument.find('@');
+  node->device = argument.substr(0, at);
+  node->nodeId = defaultNodeId;
+  if (at == std::string::npos) {
+    return true;
+  }
+  const std::string text = argument.substr(at + 1U);
+  if (!parseNodeId(text, &node->nodeId)) {
+    *error = "invalid node-id '" + text + "' in '" + argument +
+             "': expected 1..127 (or 255: unconfigured, LSS only)";
     return false;
   }
-  const DeviceEntry* device = findDevice(options.device);
+  return true;
+}
+
+/// The node's device exists and takes its node-id.
+bool checkNode(const NodeArgument& node, std::string* error) {
+  const DeviceEntry* device = findDevice(node.device);
   if (device == nullptr) {
-    *error = "unknown device '" + options.device + "' (one of: " + deviceNames() + ")";
+    *error = "unknown device '" + node.device + "' (one of: " + deviceNames() + ")";
     return false;
   }
-  if (options.nodeId > device->highestNodeId && options.nodeId != cob::kLssUnconfigured) {
-    *error = "invalid node-id " + std::to_string(options.nodeId) + " for " + options.device +
+  if (node.nodeId == cob::kLssUnconfigured && !device->lss) {
+    *error = node.device + " has no LSS: it needs a node-id (--node-id 1.." +
+             std::to_string(device->highestNodeId) + ")";
+    return false;
+  }
+  if (node.nodeId > device->highestNodeId && node.nodeId != cob::kLssUnconfigured) {
+    *error = "invalid node-id " + std::to_string(node.nodeId) + " for " + node.device +
              ": it takes 1.." + std::to_string(device->highestNodeId);
     return false;
   }
   return true;
 }
 
+/// The nodes of complete options (not --help, --list-devices): at least one, at most
+/// kMostNodes, each a known device, no node-id twice (a device's own counts; 255 may repeat).
+bool checkNodes(const SlaveOptions& options, std::string* error) {
+  if (options.nodes.empty()) {
+    *error = "no DEVICE given (one of: " + deviceNames() + ")";
+    return false;
+  }
+  if (options.nodes.size() > kMostNodes) {
+    *error = std::to_string(options.nodes.size()) + " nodes given: at most " +
+             std::to_string(kMostNodes) + " fit on one bus";
+    return false;
+  }
+  bool taken[256] = {};
+  for (const NodeArgument& node : options.nodes) {
+    if (!checkNode(node, error)) {
+      return false;
+    }
+    const int nodeId = node.nodeId >= 0 ? node.nodeId : findDevice(node.device)->defaultNodeId;
+    if (nodeId != cob::kLssUnconfigured && taken[nodeId]) {
+      *error = "node-id " + std::to_string(nodeId) + " given twice (" + node.device +
+               "): every node needs its own";
+      return false;
+    }
+    taken[nodeId] = true;
+  }
+  return true;
+}
+
+/// --eds names a device (its name or its alias).
+bool checkEdsDevice(const SlaveOptions& options, std::string* error) {
+  if (findDevice(options.edsDevice) == nullptr) {
+    *error = "unknown device '" + options.edsDevice + "' (one of: " + deviceNames() + ")";
+    return false;
+  }
+  return true;
+}
+
+/// The DEVICE arguments, after the options: --node-id applies wherever it stands.
+bool parseNodes(const std::vector<std::string>& positional, SlaveOptions* options,
+                std::string* error) {
+  for (const std::string& argument : positional) {
+    NodeArgument node;
+    if (!parseNodeArgument(argument, options->nodeId, &node, error)) {
+      return false;
+    }
+    options->nodes.push_back(node);
+  }
+  return true;
+}
+
+/// After the options: what the command asks for is complete (--help and --list-devices need
+/// nothing more; --eds a device; else the nodes).
+bool finishOptions(const std::vector<std::string>& positional, SlaveOptions* options,
+                   std::string* error) {
+  if (options->help || options->listDevices) {
+    return true;
+  }
+  if (!options->edsDevice.empty()) {
+    return checkEdsDevice(*options, error);
+  }
+  return parseNodes(positional, options, error) && checkNodes(*options, error);
+}
+
 }  // namespace
 
 std::string slaveUsage() {
   return "usage: costa-slave [--iface NAME] [--node-id N] [--storage FILE] [--trace] DEVICE\n"
+         "       costa-slave [options] DEVICE[@NODE-ID] [DEVICE[@NODE-ID] ...]\n"
          "\n"
-         "Runs a CANopen slave device on a SocketCAN interface.\n"
+         "Runs CANopen slave devices on a SocketCAN interface: one, or several nodes on one bus\n"
+         "(each node's frames reach the others in the process and go out once).\n"
          "\n"
          "  --iface NAME     CAN interface (default vcan0)\n"
          "  --node-id N      node-id 1..127 (decimal or 0x hex; default: the device's own);\n"
-         "                   255 starts without a node-id, waiting for LSS\n"
-         "  --storage FILE   file holding the device's non-volatile parameters\n"
-         "  --trace          print every frame received and sent, with its meaning\n"
+         "                   255 starts without a node-id, waiting for LSS. DEVICE@N gives a\n"
+         "                   node its node-id in the same way (@255 may repeat)\n"
+         "  --storage FILE   file holding the device's non-volatile parameters; with several\n"
+         "                   nodes a directory holding DEVICE-K.bin for the K-th node given\n"
+         "                   (K from 1, DEVICE the device's name, e.g. mseries-3.bin)\n"
+         "  --trace          print every frame received and sent, with its meaning (with\n"
+         "                   several nodes each line names its node: @05 tx 705 ...)\n"
          "  --control PATH   accept simulation commands (for example 'angle 90' for gra/grn) as\n"
-         "                   datagrams on a UNIX socket at PATH; each gets 'ok' or 'error: ...'\n"
+         "                   datagrams on a UNIX socket at PATH; each gets 'ok' or 'error: ...';\n"
+         "                   with several nodes a command names its node: '@0x10 angle 90'\n"
          "  --list-devices   list the devices with their identity (0x1018) and exit\n"
          "  --eds DEVICE     print the EDS the device was built from, byte for byte, and exit\n"
          "  --help           show this help and exit\n"
          "\n"
          "DEVICE is one of: " +
-         deviceNames() + "\n";
+         deviceNames() +
+         "\n"
+         "With several nodes (at most 127, node-ids distinct), the K-th node given has serial\n"
+         "number K in 0x1018:04, so that LSS Fastscan tells unconfigured (@255) nodes apart.\n";
+}
+
+std::string nodeStoragePath(const SlaveOptions& options, size_t index) {
+  if (options.storagePath.empty() || options.nodes.size() == 1U) {
+    return options.storagePath;
+  }
+  const DeviceEntry* device = findDevice(options.nodes[index].device);
+  return options.storagePath + "/" + device->name + "-" + std::to_string(index + 1U) + ".bin";
 }
 
 bool parseSlaveOptions(const std::vector<std::string>& arguments, SlaveOptions* options,
                        std::string* error) {
+  std::vector<std::string> positional;
   for (size_t i = 0; i < arguments.size(); ++i) {
     const std::string& argument = arguments[i];
     auto value = [&](std::string* out) {
@@ -127,24 +228,11 @@ bool parseSlaveOptions(const std::vector<std::string>& arguments, SlaveOptions* 
     } else if (!argument.empty() && argument[0] == '-') {
       *error = "unknown option '" + argument + "' (see --help)";
       return false;
-    } else if (options->device.empty()) {
-      options->device = argument;
     } else {
-      *error = "unexpected argument '" + argument + "': only one DEVICE";
-      return false;
+      positional.push_back(argument);
     }
   }
-  if (options->help || options->listDevices) {
-    return true;
-  }
-  if (!options->edsDevice.empty()) {
-    if (findDevice(options->edsDevice) == nullptr) {
-      *error = "unknown device '" + options->edsDevice + "' (one of: " + deviceNames() + ")";
-      return false;
-    }
-    return true;
-  }
-  return checkDevice(*options, error);
+  return finishOptions(positional, options, error);
 }
 
 }  // namespace costa::host

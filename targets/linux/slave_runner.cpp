@@ -5,6 +5,8 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -13,9 +15,9 @@
 #include "costa/port/linux/monotonic_clock.hpp"
 #include "costa/port/linux/socketcan_port.hpp"
 #include "device_registry.hpp"
-#include "frame_text.hpp"
-#include "frame_trace.hpp"
+#include "local_bus.hpp"
 #include "slave_counters.hpp"
+#include "slave_tracer.hpp"
 
 namespace costa::host {
 namespace {
@@ -27,102 +29,12 @@ void onStopSignal(int /*signal*/) {
   stopRequested = 1;
 }
 
-/// Prints one trace line per frame: time, direction, frame, meaning.
-class Tracer {
- public:
-  Tracer(bool enabled, port::LinuxMonotonicClock& clock)
-      : enabled_(enabled), clock_(clock), epoch_(clock.nowMicroseconds()) {}
-
-  void attach(DeviceTarget* target) {
-    target_ = target;
-    decoder_ = std::make_unique<FrameTracer>(&target->node().dictionary(), target->names(),
-                                             target->node().profile());
-  }
-
-  void line(const char* direction, const CanFrame& frame) {
-    if (!enabled_) {
-      return;
-    }
-    const std::string meaning =
-        decoder_ ? decoder_->describe(frame, target_->node().nodeId()) : std::string();
-    print(direction, formatFrame(frame), meaning);
-  }
-
-  /// An error frame of the driver and the controller events it reported.
-  void errorFrame(const port::SocketCanEvents& events) {
-    if (!enabled_) {
-      return;
-    }
-    std::string meaning;
-    for (const CanControllerEvent event : events) {
-      meaning += meaning.empty() ? "controller: " : ", ";
-      meaning += controllerEventName(event);
-    }
-    print("rx", "error frame", meaning);
-  }
-
-  /// The counters of losses, when they changed since the last call.
-  void counters(const SlaveCounters& now) {
-    if (!enabled_ || now == shown_) {
-      return;
-    }
-    shown_ = now;
-    print("--", "counters", describeCounters(now));
-  }
-
-  /// "bit rate now 500 kbit/s": the node re-timed the port.
-  void bitRate(uint32_t bitsPerSecond) {
-    if (!enabled_) {
-      return;
-    }
-    char text[40];
-    if (bitsPerSecond % 1000U == 0U) {
-      std::snprintf(text, sizeof(text), "bit rate now %u kbit/s", bitsPerSecond / 1000U);
-    } else {
-      std::snprintf(text, sizeof(text), "bit rate now %u bit/s", bitsPerSecond);
-    }
-    print("--", text, "");
-  }
-
- private:
-  void print(const char* direction, const std::string& what, const std::string& meaning) {
-    const uint64_t elapsed = clock_.nowMicroseconds() - epoch_;
-    std::printf("%5llu.%06llu %s %-32s %s\n", static_cast<unsigned long long>(elapsed / 1000000U),
-                static_cast<unsigned long long>(elapsed % 1000000U), direction, what.c_str(),
-                meaning.c_str());
-    std::fflush(stdout);
-  }
-
-  bool enabled_;
-  port::LinuxMonotonicClock& clock_;
-  uint64_t epoch_;
-  DeviceTarget* target_ = nullptr;
-  std::unique_ptr<FrameTracer> decoder_;
-  SlaveCounters shown_;
-};
-
-/// The node's transmitter: the socket, with every accepted frame traced.
-class TracedSocket final : public CanTransmitter {
- public:
-  TracedSocket(port::SocketCanPort& socket, Tracer& tracer) : socket_(socket), tracer_(tracer) {}
-  bool tryTransmit(const CanFrame& frame) noexcept override {
-    if (!socket_.tryTransmit(frame)) {
-      return false;
-    }
-    tracer_.line("tx", frame);
-    return true;
-  }
-
- private:
-  port::SocketCanPort& socket_;
-  Tracer& tracer_;
-};
-
 /// The node's bit rate control: the socket's (which records the rate; the interface's own rate
 /// is the system's), with every switch traced.
 class TracedBitRate final : public CanBitRateControl {
  public:
-  TracedBitRate(port::SocketCanPort& socket, Tracer& tracer) : socket_(socket), tracer_(tracer) {}
+  TracedBitRate(port::SocketCanPort& socket, SlaveTracer& tracer)
+      : socket_(socket), tracer_(tracer) {}
   bool setBitRate(uint32_t bitsPerSecond) noexcept override {
     if (!socket_.setBitRate(bitsPerSecond)) {
       return false;
@@ -133,10 +45,11 @@ class TracedBitRate final : public CanBitRateControl {
 
  private:
   port::SocketCanPort& socket_;
-  Tracer& tracer_;
+  SlaveTracer& tracer_;
 };
 
-int timeoutMilliseconds(Microseconds deadline, Microseconds now, bool txPending) {
+/// How long to wait for `deadline`, in microseconds.
+timespec waitTime(Microseconds deadline, Microseconds now, bool txPending) {
   Microseconds wait = deadline == kNever ? kNever : reached(now, deadline) ? 0U : deadline - now;
   if (txPending && wait > 1000U) {
     wait = 1000U;  // the controller refused frames: offer them again soon
@@ -145,7 +58,10 @@ int timeoutMilliseconds(Microseconds deadline, Microseconds now, bool txPending)
   if (wait > limit) {
     wait = limit;
   }
-  return static_cast<int>((wait + 999U) / 1000U);
+  timespec result{};
+  result.tv_sec = static_cast<time_t>(wait / 1000000U);
+  result.tv_nsec = static_cast<decltype(result.tv_nsec)>(wait % 1000000U) * 1000;
+  return result;
 }
 
 /// Lets SIGINT and SIGTERM stop the loop. They are blocked except while the loop waits (in
@@ -172,26 +88,104 @@ Microseconds nodeTime(port::LinuxMonotonicClock& clock) {
   return static_cast<Microseconds>(clock.nowMicroseconds());
 }
 
-/// Passes every frame the socket holds to the target, and the controller events of error
-/// frames to its node.
-void receiveFrames(port::SocketCanPort& socket, Tracer& tracer, DeviceTarget& target,
+/// Passes every frame the socket holds to the nodes, and the controller events of error frames.
+void receiveFrames(port::SocketCanPort& socket, SlaveTracer& tracer, LocalBus& bus,
                    port::LinuxMonotonicClock& clock) {
   CanFrame frame;
   port::SocketCanEvents events;
   for (;;) {
     const auto received = socket.receive(&frame, &events);
     if (received == port::SocketCanPort::Received::kFrame) {
-      tracer.line("rx", frame);
-      target.onFrame(frame, nodeTime(clock));
+      bus.receive(frame, nodeTime(clock));
     } else if (received == port::SocketCanPort::Received::kErrorFrame) {
       tracer.errorFrame(events);
       for (const CanControllerEvent event : events) {
-        target.node().onControllerEvent(event, nodeTime(clock));
+        bus.controllerEvent(event, nodeTime(clock));
       }
     } else {
       break;
     }
   }
+}
+
+/// The losses of every node together.
+SlaveCounters totalCounters(LocalBus& bus, const port::SocketCanPort::Counters& socket) {
+  SlaveCounters total = countersOf(bus.node(0).node(), socket);
+  for (size_t i = 1; i < bus.nodeCount(); ++i) {
+    const SlaveCounters more = countersOf(bus.node(i).node(), socket);
+    total.txDropped += more.txDropped;
+    total.txExpired += more.txExpired;
+    total.emcyLost += more.emcyLost;
+  }
+  return total;
+}
+
+/// Creates every node of `options` on `bus`. False with one line in `error`.
+bool createNodes(const SlaveOptions& options, LocalBus& bus, CanBitRateControl& bitRate,
+                 std::string* error) {
+  const bool several = options.nodes.size() > 1U;
+  if (several && !options.storagePath.empty()) {
+    std::error_code failed;
+    std::filesystem::create_directories(options.storagePath, failed);
+    if (failed) {
+      *error =
+          "cannot create the storage directory " + options.storagePath + ": " + failed.message();
+      return false;
+    }
+  }
+  for (size_t i = 0; i < options.nodes.size(); ++i) {
+    TargetOptions targetOptions;
+    targetOptions.nodeId = options.nodes[i].nodeId;
+    targetOptions.storagePath = nodeStoragePath(options, i);
+    targetOptions.bitRate = &bitRate;
+    targetOptions.serialNumber = several ? static_cast<uint32_t>(i + 1U) : 0U;
+    std::unique_ptr<DeviceTarget> target =
+        createDevice(*findDevice(options.nodes[i].device), bus.nextPort(), targetOptions, error);
+    if (!target) {
+      return false;
+    }
+    bus.attach(std::move(target));
+  }
+  return true;
+}
+
+/// Runs a --control command: "[@NODE-ID] command" (with several nodes the node-id is needed).
+std::string control(LocalBus& bus, const std::string& command) {
+  if (command.empty() || command[0] != '@') {
+    if (bus.nodeCount() > 1U) {
+      return "name the node: @NODE-ID " + command;
+    }
+    bus.touch(0);
+    return bus.node(0).control(command);
+  }
+  const size_t space = command.find(' ');
+  const std::string nodeText = command.substr(1, space == std::string::npos ? space : space - 1U);
+  char* end = nullptr;
+  const uint64_t nodeId = std::strtoull(nodeText.c_str(), &end, 0);
+  if (nodeText.empty() || *end != '\0') {
+    return "invalid node-id '" + nodeText + "'";
+  }
+  const std::string rest = space == std::string::npos ? std::string() : command.substr(space + 1U);
+  for (size_t i = 0; i < bus.nodeCount(); ++i) {
+    if (bus.node(i).node().nodeId() == nodeId) {
+      bus.touch(i);
+      return bus.node(i).control(rest);
+    }
+  }
+  return "no node with node-id " + nodeText;
+}
+
+/// "example on vcan0, node-id 1" or "3 nodes on vcan0: example@1 solo@2 gra@3".
+std::string describeNodes(const SlaveOptions& options, LocalBus& bus) {
+  if (bus.nodeCount() == 1U) {
+    return options.nodes[0].device + " on " + options.interfaceName + ", node-id " +
+           std::to_string(bus.node(0).node().nodeId());
+  }
+  std::string text = std::to_string(bus.nodeCount()) + " nodes on " + options.interfaceName + ":";
+  for (size_t i = 0; i < bus.nodeCount(); ++i) {
+    text += " " + options.nodes[i].device + "@" + std::to_string(bus.node(i).node().nodeId());
+  }
+  return text;
 }
 
 }  // namespace
@@ -204,43 +198,33 @@ int runSlave(const SlaveOptions& options) {
     return 1;
   }
   port::LinuxMonotonicClock clock;
-  Tracer tracer(options.trace, clock);
-  TracedSocket transmitter(socket, tracer);
+  SlaveTracer tracer(options.trace, options.nodes.size() > 1U, clock);
   TracedBitRate bitRate(socket, tracer);
-  TargetOptions targetOptions;
-  targetOptions.nodeId = options.nodeId;
-  targetOptions.storagePath = options.storagePath;
-  targetOptions.bitRate = &bitRate;
-  std::unique_ptr<DeviceTarget> target =
-      createDevice(*findDevice(options.device), transmitter, targetOptions, &error);
-  if (!target) {
+  LocalBus bus(socket, tracer, clock);
+  if (!createNodes(options, bus, bitRate, &error)) {
     std::fprintf(stderr, "costa-slave: %s\n", error.c_str());
     return 1;
   }
-  tracer.attach(target.get());
-  ControlSocket control;
-  if (!options.controlPath.empty() && !control.open(options.controlPath, &error)) {
+  ControlSocket controlSocket;
+  if (!options.controlPath.empty() && !controlSocket.open(options.controlPath, &error)) {
     std::fprintf(stderr, "costa-slave: %s\n", error.c_str());
     return 1;
   }
 
   const sigset_t waiting = catchStopSignals();
-  target->start(nodeTime(clock));
-  std::fprintf(stderr, "costa-slave: %s on %s, node-id %u\n", options.device.c_str(),
-               options.interfaceName.c_str(), target->node().nodeId());
+  bus.start(nodeTime(clock));
+  std::fprintf(stderr, "costa-slave: %s\n", describeNodes(options, bus).c_str());
 
   while (stopRequested == 0) {
-    const Microseconds now = nodeTime(clock);
-    const Microseconds deadline = target->process(now);
-    const int timeout = timeoutMilliseconds(deadline, nodeTime(clock), target->node().txPending());
-    pollfd descriptors[2] = {{socket.fd(), POLLIN, 0}, {control.fd(), POLLIN, 0}};
-    const timespec wait{timeout / 1000, (timeout % 1000) * 1000000L};
-    const nfds_t count = control.fd() >= 0 ? 2U : 1U;
+    const Microseconds deadline = bus.process();
+    const timespec wait = waitTime(deadline, nodeTime(clock), bus.txPending());
+    pollfd descriptors[2] = {{socket.fd(), POLLIN, 0}, {controlSocket.fd(), POLLIN, 0}};
+    const nfds_t count = controlSocket.fd() >= 0 ? 2U : 1U;
     const int ready = ppoll(descriptors, count, &wait, &waiting);  // signals arrive only here
     if (ready > 0 && count == 2U && (descriptors[1].revents & POLLIN) != 0) {
-      control.serve([&](const std::string& command) {
+      controlSocket.serve([&](const std::string& command) {
         std::fprintf(stderr, "costa-slave: control: %s\n", command.c_str());
-        return target->control(command);
+        return control(bus, command);
       });
     }
     if (ready < 0 && errno != EINTR) {
@@ -255,15 +239,15 @@ int runSlave(const SlaveOptions& options) {
                      options.interfaceName.c_str());
         return 1;
       }
-      receiveFrames(socket, tracer, *target, clock);
+      receiveFrames(socket, tracer, bus, clock);
     }
-    if (target->node().txPending()) {
-      target->node().flushTx();
+    if (bus.txPending()) {
+      bus.flushTx();
     }
-    tracer.counters(countersOf(target->node(), socket.counters()));
+    tracer.counters(totalCounters(bus, socket.counters()));
   }
   std::fprintf(stderr, "costa-slave: stopped: %s\n",
-               describeCounters(countersOf(target->node(), socket.counters())).c_str());
+               describeCounters(totalCounters(bus, socket.counters())).c_str());
   return 0;
 }
 
