@@ -1,6 +1,8 @@
 // costa-slave as a process on vcan: clean shutdown, the trace, and its error paths.
 #include <gtest/gtest.h>
+
 #include <signal.h>
+#include <sstream>
 
 #include <chrono>
 #include <thread>
@@ -54,6 +56,39 @@ TEST(SlaveProcessOnVcan, TraceShowsEveryFrameWithItsMeaning) {
   EXPECT_NE(output.find("SDO upload 0x1008:00"), std::string::npos) << output;
   EXPECT_NE(output.find("0x1008:00 = \"Costa example\""), std::string::npos) << output;
   EXPECT_NE(output.find("SDO download 0x1017:00 = 1000"), std::string::npos) << output;
+}
+
+TEST(SlaveProcessOnVcan, TraceShowsTheIndicatorsOfEachNode) {
+  SocketBus bus(SlaveNodes{{"example@1", "solo@2"}}, {"--trace"});
+  ASSERT_EQ(bus.error(), "");
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    tx 702 [1] 00
+    rx 000 [2] 01 02                     # node 2 operational
+    rx 000 [2] 02 01                     # node 1 stopped
+    rx 601 [8] 40 00 10 00 00 00 00 00   # (an answer shows that both have seen their command)
+    rx 602 [8] 40 00 10 00 00 00 00 00
+    tx 582 [8] xx 00 10 00 xx xx xx xx
+  )",
+                     bus, kSocketReceiveTimeoutMs),
+            "");
+  EXPECT_EQ(bus.slave().stop(SIGTERM), 0);
+  const std::string output = bus.slave().output();
+  // A line of the node with "indicators" and the states after it.
+  const auto shows = [&output](const std::string& node, const std::string& states) {
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);) {
+      const size_t at = line.find(node + " -- indicators ");
+      if (at != std::string::npos && line.size() >= states.size() &&
+          line.compare(line.size() - states.size(), states.size(), states) == 0) {
+        return true;
+      }
+    }
+    return false;
+  };
+  EXPECT_TRUE(shows("@01", "RUN blinking, ERROR off")) << output;
+  EXPECT_TRUE(shows("@02", "RUN on, ERROR off")) << output;
+  EXPECT_TRUE(shows("@01", "RUN single flash, ERROR off")) << output;
 }
 
 TEST(SlaveProcessOnVcan, TraceReportsTheBitRateTheNodeSwitchedTo) {

@@ -12,6 +12,9 @@ CanTransmitter& LocalBus::nextPort() {
 void LocalBus::attach(std::unique_ptr<DeviceTarget> target) {
   tracer_.attach(*target);
   Slot slot;
+  if (tracer_.enabled()) {
+    slot.indicators = std::make_unique<NodeIndicators>(target->node());
+  }
   slot.target = std::move(target);
   nodes_.push_back(std::move(slot));
 }
@@ -60,11 +63,19 @@ void LocalBus::controllerEvent(CanControllerEvent event, Microseconds now) {
 }
 
 void LocalBus::runDue(Microseconds now) {
-  for (Slot& slot : nodes_) {
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    Slot& slot = nodes_[i];
     if (slot.due || slot.refused || reached(now, slot.deadline)) {
       slot.due = false;
       slot.deadline = slot.target->process(now);
       slot.refused = slot.target->node().txPending();
+      if (slot.indicators) {
+        slot.deadline = earliest(slot.deadline, slot.indicators->process(now));
+        const std::string change = slot.indicators->change();
+        if (!change.empty()) {
+          tracer_.indicators(i, change);
+        }
+      }
     }
   }
 }

@@ -20,6 +20,7 @@
 #include "costa/port/linux/monotonic_clock.hpp"
 #include "costa/port/linux/socketcan_port.hpp"
 #include "device_target.hpp"
+#include "node_indicators.hpp"
 #include "slave_tracer.hpp"
 
 namespace costa::host {
@@ -74,7 +75,8 @@ class LocalBus {
     std::unique_ptr<DeviceTarget> target;
     Microseconds deadline = 0;
     bool due = true;
-    bool refused = false;  ///< the socket refused a frame: the node holds it
+    bool refused = false;                        ///< the socket refused a frame: the node holds it
+    std::unique_ptr<NodeIndicators> indicators;  ///< with --trace: its LEDs' states traced
   };
 
   bool transmit(size_t sender, const CanFrame& frame);

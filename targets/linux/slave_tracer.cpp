@@ -90,6 +90,19 @@ void SlaveTracer::bitRate(uint32_t bitsPerSecond) {
   print("", "--", text, "");
 }
 
+void SlaveTracer::indicators(size_t index, const std::string& states) {
+  if (!enabled_) {
+    return;
+  }
+  std::string label;
+  if (labelled_) {
+    char text[8];
+    std::snprintf(text, sizeof(text), "@%02X ", nodes_[index].target->node().nodeId());
+    label = text;
+  }
+  print(label, "--", "indicators", states);
+}
+
 void SlaveTracer::print(const std::string& label, const char* direction, const std::string& what,
                         const std::string& meaning) {
   const uint64_t elapsed = clock_.nowMicroseconds() - epoch_;

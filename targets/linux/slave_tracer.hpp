@@ -37,6 +37,9 @@ class SlaveTracer {
   void counters(const SlaveCounters& now);
   /// "bit rate now 500 kbit/s": a node re-timed the port.
   void bitRate(uint32_t bitsPerSecond);
+  /// Node `index`'s CiA 303-3 indicators changed: "indicators RUN blinking, ERROR off".
+  void indicators(size_t index, const std::string& states);
+  bool enabled() const { return enabled_; }
 
  private:
   struct Traced {
