@@ -72,9 +72,10 @@ bool TimeService::timeOfDay(Microseconds now, TimeOfDay* out) const noexcept {
 void TimeService::setProducerPeriod(Microseconds period, Microseconds now) noexcept {
   period_ = period < kLongestDelay ? period : kLongestDelay;
   nextTime_ = kNever;
-  if (period_ != 0U && rebaseAt_ != kNever) {
-    schedule(&nextTime_, at(now, period_));
+  if (period == 0U || rebaseAt_ == kNever) {
+    return;  // stopped, or nothing to send until the clock of day is set
   }
+  schedule(&nextTime_, at(now, period_));
 }
 
 void TimeService::process(Microseconds now, bool allowed) noexcept {

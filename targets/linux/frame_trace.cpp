@@ -153,7 +153,7 @@ std::string FrameTracer::describeTime(const CanFrame& frame) {
     return "TIME (malformed, ignored)";
   }
   // Days since 1984-01-01 as a date (the Gregorian calendar, leap years by the 400-year rule).
-  uint32_t days = static_cast<uint32_t>(loadLittleEndian(frame.data + 4, 2));
+  auto days = static_cast<uint32_t>(loadLittleEndian(frame.data + 4, 2));
   const uint32_t dayNumber = days;
   unsigned year = 1984;
   const auto yearLength = [](unsigned y) {

@@ -13,8 +13,8 @@ constexpr uint32_t kIde16 = 1U << 3;
 /// Identifier in the low half, mask in the high half: the standard identifier's bits of the
 /// filter's mask must agree, IDE must be 0 (standard), RTR and EXID do not matter.
 constexpr uint32_t halfBank(const CanIdFilter& filter) noexcept {
-  const uint32_t id = (uint32_t{filter.id} & 0x7FFU) << kStidShift16;
-  const uint32_t mask = ((uint32_t{filter.mask} & 0x7FFU) << kStidShift16) | kIde16;
+  const uint32_t id = (static_cast<uint32_t>(filter.id) & 0x7FFU) << kStidShift16;
+  const uint32_t mask = ((static_cast<uint32_t>(filter.mask) & 0x7FFU) << kStidShift16) | kIde16;
   return (mask << 16U) | id;
 }
 
