@@ -261,6 +261,30 @@ class AbsentTimeService final : public AbsentObjects {
   uint32_t framesIgnored() const noexcept { return 0; }
 };
 
+/// Additional SDO servers compiled out: no servers, no routes, 0x1201..0x127F do not exist.
+class AbsentSdoServers final : public AbsentObjects {
+ public:
+  template <typename... Ignored>
+  explicit AbsentSdoServers(Ignored&... ignored) noexcept {
+    (static_cast<void>(ignored), ...);
+  }
+  static void addRoutes(const od::ObjectDictionary& dictionary, FrameRouter& router) noexcept {
+    (void)dictionary;
+    (void)router;
+  }
+  static bool onRequest(const CanFrame& frame, uint8_t server, Microseconds now) noexcept {
+    (void)frame;
+    (void)server;
+    (void)now;
+    return false;
+  }
+  static void process(Microseconds now) noexcept { (void)now; }
+  static Microseconds nextDeadline() noexcept { return kNever; }
+  static void reset() noexcept {}
+  static bool valid() noexcept { return true; }
+  static size_t count() noexcept { return 0; }
+};
+
 /// EMCY consumer compiled out: no routes, 0x1028 does not exist.
 class AbsentEmcyConsumer final : public AbsentObjects {
  public:

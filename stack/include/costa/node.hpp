@@ -49,6 +49,7 @@
 #include "costa/port/can_id_filter.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/sdo_server.hpp"
+#include "costa/sdo_servers.hpp"
 #include "costa/service_objects.hpp"
 #include "costa/stored_parameters.hpp"
 #include "costa/sync_service.hpp"
@@ -215,6 +216,8 @@ class Node {
   const LssSlaveService& lss() const noexcept { return lss_; }
   /// The SDO server (read-only: whether a transfer runs, consistency checks).
   const SdoServer& sdo() const noexcept { return sdo_; }
+  /// The additional SDO servers (0x1201..0x127F; a stand-in without features::kSdoServers).
+  const SdoServersChoice& sdoServers() const noexcept { return sdoServers_; }
   const PdoEngine& pdos() const noexcept { return pdos_; }
   /// The parameter store when the node has storage (laid out), else null.
   ParameterStore* parameterStore() noexcept { return stored_.store(); }
@@ -252,6 +255,7 @@ class Node {
   EmcyProducer emcy_;
   PdoContext pdoContext_;
   SdoServer sdo_;
+  SdoServersChoice sdoServers_;
   HeartbeatProducer heartbeat_;
   SyncService sync_;
   TimeServiceChoice time_;
