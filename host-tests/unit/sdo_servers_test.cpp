@@ -230,5 +230,23 @@ TEST_F(SdoServersTest, BlockDownloadThroughTheAdditionalServer) {
   EXPECT_TRUE(bus_.node().sdoServers().valid());
 }
 
+TEST_F(SdoServersTest, AValidServerIsInTheAcceptanceFilters) {
+  auto has681 = [this] {
+    CanIdFilter filters[32];
+    const size_t count = bus_.node().receiveFilters(filters, 32);
+    for (size_t i = 0; i < count && i < 32U; ++i) {
+      if (filters[i].mask == CanIdFilter::kExact && filters[i].id == 0x681U) {
+        return true;
+      }
+    }
+    return false;
+  };
+  EXPECT_FALSE(has681());
+  const uint32_t version = bus_.node().receiveFiltersVersion();
+  configure();
+  EXPECT_NE(bus_.node().receiveFiltersVersion(), version);
+  EXPECT_TRUE(has681());
+}
+
 }  // namespace
 }  // namespace costa::test

@@ -28,7 +28,8 @@ SdoServers::SdoServers(ObjectAccess& access, TransmitPath& tx, const SdoProfile&
                        size_t count, Microseconds timeout, FrameRouter& routes) noexcept
     : slots_(slots), count_(count), routes_(routes) {
   for (size_t i = 0; i < count_; ++i) {
-    new (slots_[i].bytes)
+    // NOLINTNEXTLINE(cppcoreguidelines-owning-memory): placement in the caller's slot, no heap
+    slots_[i].server = new (slots_[i].bytes)
         SdoServer(access, tx, profile, clock, buffers + i * bufferSize, bufferSize, timeout);
     slots_[i].request = kNotValid;
     slots_[i].response = kNotValid;

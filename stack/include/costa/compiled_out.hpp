@@ -268,21 +268,21 @@ class AbsentSdoServers final : public AbsentObjects {
   explicit AbsentSdoServers(Ignored&... ignored) noexcept {
     (static_cast<void>(ignored), ...);
   }
-  static void addRoutes(const od::ObjectDictionary& dictionary, FrameRouter& router) noexcept {
+  void addRoutes(const od::ObjectDictionary& dictionary, FrameRouter& router) noexcept {
     (void)dictionary;
     (void)router;
   }
-  static bool onRequest(const CanFrame& frame, uint8_t server, Microseconds now) noexcept {
+  bool onRequest(const CanFrame& frame, uint8_t server, Microseconds now) noexcept {
     (void)frame;
     (void)server;
     (void)now;
     return false;
   }
-  static void process(Microseconds now) noexcept { (void)now; }
-  static Microseconds nextDeadline() noexcept { return kNever; }
-  static void reset() noexcept {}
-  static bool valid() noexcept { return true; }
-  static size_t count() noexcept { return 0; }
+  void process(Microseconds now) noexcept { (void)now; }
+  Microseconds nextDeadline() const noexcept { return kNever; }
+  void reset() noexcept {}
+  bool valid() const noexcept { return true; }
+  size_t count() const noexcept { return 0; }
 };
 
 /// EMCY consumer compiled out: no routes, 0x1028 does not exist.

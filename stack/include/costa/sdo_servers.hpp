@@ -32,6 +32,7 @@ namespace costa {
 /// configured with.
 struct SdoServerSlot {
   alignas(SdoServer) unsigned char bytes[sizeof(SdoServer)];
+  SdoServer* server;  ///< the server constructed in `bytes`
   uint32_t request;   ///< COB-ID client -> server as last applied
   uint32_t response;  ///< COB-ID server -> client as last applied
 };
@@ -73,12 +74,8 @@ class SdoServers : public ObjectHook {
                   size_t length) noexcept override;
 
  private:
-  SdoServer& at(size_t server) noexcept {
-    return *reinterpret_cast<SdoServer*>(slots_[server].bytes);
-  }
-  const SdoServer& at(size_t server) const noexcept {
-    return *reinterpret_cast<const SdoServer*>(slots_[server].bytes);
-  }
+  SdoServer& at(size_t server) noexcept { return *slots_[server].server; }
+  const SdoServer& at(size_t server) const noexcept { return *slots_[server].server; }
 
   SdoServerSlot* slots_;
   size_t count_;

@@ -38,8 +38,10 @@ class ServiceObjects {
   /// stand-ins of compiled-out services, whose objects do not exist), else null: the other
   /// services read as the dictionary does.
   ObjectHook* findReader(uint16_t index) const noexcept {
-    if (!features::kSdoServers && index - 0x1201U <= 0x127FU - 0x1201U) {
-      return hooks_.sdoServers;  // the stand-in: they do not exist
+    if constexpr (!features::kSdoServers) {
+      if (index - 0x1201U <= 0x127FU - 0x1201U) {
+        return hooks_.sdoServers;  // the stand-in: they do not exist
+      }
     }
     const uint32_t offset = index - 0x1000U;
     if (offset >= sizeof(kOwners)) {
@@ -49,16 +51,17 @@ class ServiceObjects {
     return (kReaders & (1U << owner)) != 0U ? hooks_.of[owner] : nullptr;
   }
 
-  /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x102F.
+  /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x102F;
+  /// range tests for the PDOs and the additional SDO servers.
   ObjectHook* find(uint16_t index) const noexcept {
     if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
       return hooks_.pdos;
     }
-    if (index - 0x1201U <= 0x127FU - 0x1201U) {
-      return hooks_.sdoServers;
-    }
     const uint32_t offset = index - 0x1000U;
-    return offset < sizeof(kOwners) ? hooks_.of[kOwners[offset]] : nullptr;
+    if (offset < sizeof(kOwners)) {
+      return hooks_.of[kOwners[offset]];
+    }
+    return index - 0x1201U <= 0x127FU - 0x1201U ? hooks_.sdoServers : nullptr;
   }
 
  private:
