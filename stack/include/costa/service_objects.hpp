@@ -61,6 +61,7 @@ class ServiceObjects {
     if (offset < sizeof(kOwners)) {
       return hooks_.of[kOwners[offset]];
     }
+    // cppcheck-suppress knownConditionTrueFalse ; true for 0x1201..0x127F
     return index - 0x1201U <= 0x127FU - 0x1201U ? hooks_.sdoServers : nullptr;
   }
 
