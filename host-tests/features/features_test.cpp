@@ -47,6 +47,7 @@ TEST(FeaturesBuild, IsTheVariantCMakeAskedFor) {
   add(features::kParameterStorage, "PARAMETER_STORAGE");
   add(features::kTime, "TIME");
   add(features::kEmcyConsumer, "EMCY_CONSUMER");
+  add(features::kSdoServers, "SDO_SERVERS");
   EXPECT_EQ(compiledIn, COSTA_EXPECTED_FEATURES);
 }
 
@@ -159,6 +160,23 @@ TEST_F(FeaturesTest, OtherNodesEmergenciesAreIgnoredWithoutEmcyConsumer) {
   const uint32_t before = ignored();
   EXPECT_EQ(play("rx 082 [8] 10 81 11 00 00 00 00 00  # node 2: CAN overrun\n"), "");
   EXPECT_EQ(ignored() - before, features::kEmcyConsumer ? 0U : 1U);
+}
+
+TEST_F(FeaturesTest, AdditionalSdoServersDoNotExistWithoutThem) {
+  // The bare node's dictionary has 0x1201 (not valid); without the feature it does not exist.
+  EXPECT_EQ(play("tx 701 [1] 00\n"
+                 "rx 601 [8] 40 01 12 01 00 00 00 00  # 0x1201:01\n" +
+                 lines(features::kSdoServers, "tx 581 [8] 43 01 12 01 00 00 00 80  # not valid",
+                       "tx 581 [8] 80 01 12 01 00 00 02 06  # object does not exist") +
+                 "rx 601 [8] 23 01 12 01 81 06 00 00  # 0x681, valid\n" +
+                 lines(features::kSdoServers, "tx 581 [8] 60 01 12 01 00 00 00 00",
+                       "tx 581 [8] 80 01 12 01 00 00 02 06") +
+                 "rx 601 [8] 23 01 12 02 C1 06 00 00  # 0x6C1, valid\n" +
+                 lines(features::kSdoServers, "tx 581 [8] 60 01 12 02 00 00 00 00",
+                       "tx 581 [8] 80 01 12 02 00 00 02 06") +
+                 "rx 681 [8] 40 00 10 00 00 00 00 00  # to the additional server\n" +
+                 lines(features::kSdoServers, "tx 6C1 [8] 43 00 10 00 xx xx xx xx", "")),
+            "");
 }
 
 TEST_F(FeaturesTest, NothingIsStoredWithoutParameterStorage) {

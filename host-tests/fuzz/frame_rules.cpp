@@ -156,6 +156,14 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
   }
   ids.add(cob::kSdoTxBase + nodeId);
   const od::ObjectDictionary& dictionary = node.dictionary();
+  for (uint16_t index = 0x1201; index <= 0x127F; ++index) {
+    // An additional server's responses (answers under way when it was reconfigured included).
+    const uint32_t response = static_cast<uint32_t>(dictionary.readUnsigned(index, 2, ~0U));
+    if (dictionary.findObject(index) != nullptr && plainStandardId(response & ~kInvalidBit) &&
+        !restrictedCanId(response & kIdBits)) {
+      ids.add(response & kIdBits);
+    }
+  }
   const CobIdEntries& cobIds = cobIdEntries(dictionary.definition());
   if (!cobIds.emcy.valid()) {
     ids.add(cob::kEmcyBase + nodeId);
@@ -214,6 +222,15 @@ std::string checkConfiguredCanIds(const Node& node) {
     if ((entry & kInvalidBit) == 0U &&
         (restrictedCanId(entry & kIdBits) || !plainStandardId(entry))) {
       return "valid EMCY consumer entry " + hex(entry) + " has a restricted or 29-bit CAN-ID";
+    }
+  }
+  for (uint16_t index = 0x1201; index <= 0x127F; ++index) {
+    for (uint8_t sub = 1; sub <= 2U && dictionary.findObject(index) != nullptr; ++sub) {
+      const auto cob = static_cast<uint32_t>(dictionary.readUnsigned(index, sub, kInvalidBit));
+      if ((cob & kInvalidBit) == 0U && (restrictedCanId(cob & kIdBits) || !plainStandardId(cob))) {
+        return "valid SDO server COB-ID " + hex(cob) + " at " + hex(index) +
+               " has a restricted or 29-bit CAN-ID";
+      }
     }
   }
   if (cobIds.time.valid()) {

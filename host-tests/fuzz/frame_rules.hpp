@@ -34,9 +34,12 @@ bool restrictedCanId(uint32_t id);
 /// The CAN-IDs `node` may transmit on now, in its NMT state (CiA 301 7.3.2.2):
 ///  * LSS responses 0x7E4 when the device has LSS, in any state;
 ///  * with a node-id n (1..127): boot-up/heartbeat/guarding 0x700 + n in any state;
-///  * in pre-operational and operational: SDO 0x580 + n; EMCY: the COB-ID of 0x1014 when valid
-///    and not restricted (0x80 + n without 0x1014); SYNC: the COB-ID of 0x1005 when it
-///    produces SYNC (bit 30) and the id is not restricted; TIME likewise with 0x1012;
+///  * in pre-operational and operational: SDO 0x580 + n and the 11-bit COB-ID server -> client
+///    of each additional server (0x1201..0x127F sub-index 2) when not restricted, valid or not
+///    (an answer under way when the server was made not valid leaves on its CAN-ID); EMCY: the
+///    COB-ID of 0x1014 when valid and not restricted (0x80 + n without 0x1014); SYNC: the COB-ID of
+///    0x1005 when it produces SYNC (bit 30) and the id is not restricted; TIME likewise with
+///    0x1012;
 ///  * in operational: each TPDO whose COB-ID (0x1800..0x19FF sub-index 1) is valid, 11-bit and
 ///    allowed for a TPDO (the profile's range, else not restricted).
 CanIdSet allowedTransmitIds(const Node& node, bool lss);
@@ -50,7 +53,8 @@ std::string checkTransmittedFrame(const CanFrame& frame, const CanIdSet& allowed
 
 /// Empty when no COB-ID in the node's dictionary gives a configurable object a restricted
 /// CAN-ID: SYNC 0x1005 (consumed or produced), EMCY 0x1014 when valid, TIME 0x1012 when
-/// consumed or produced and each valid EMCY consumer entry of 0x1028 (nor a 29-bit one), each
+/// consumed or produced, each valid EMCY consumer entry of 0x1028 and each valid COB-ID of an
+/// additional SDO server 0x1201..0x127F (nor a 29-bit one), each
 /// RPDO and TPDO
 /// (0x1400..0x15FF, 0x1800..0x19FF sub-index 1) when valid (a device profile's own PDO range
 /// replaces the rule); else the first one that does. A node without node-id (0xFF) sends

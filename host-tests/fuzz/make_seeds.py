@@ -154,6 +154,18 @@ def synthetic():
         "emcy-consumer": bytes([0]) + frame_event(0x082, 8, [0x10, 0x81, 0x11, 0, 0, 0, 0, 0])
         + frame_event(0x083, 7, [0, 0, 0, 0, 0, 0, 0])
         + frame_event(0x084, 8, [0x20, 0x81, 0x11, 0, 0, 0, 0, 0]),
+        # An additional SDO server (where 0x1201 exists) on 0x681/0x6C1: a segmented upload on
+        # it and one on the default server at once, a change of its CAN-ID refused while valid,
+        # then its requests not valid in the middle of a transfer.
+        "sdo-servers": bytes([0]) + sdo([0x23, 0x01, 0x12, 0x01, 0x81, 0x06, 0, 0])
+        + sdo([0x23, 0x01, 0x12, 0x02, 0xC1, 0x06, 0, 0])
+        + frame_event(0x681, 8, [0x40, 0x08, 0x10, 0, 0, 0, 0, 0])
+        + sdo([0x40, 0x08, 0x10, 0, 0, 0, 0, 0])
+        + frame_event(0x681, 8, [0x60, 0, 0, 0, 0, 0, 0, 0]) + sdo([0x60, 0, 0, 0, 0, 0, 0, 0])
+        + sdo([0x23, 0x01, 0x12, 0x01, 0x82, 0x06, 0, 0])
+        + frame_event(0x681, 8, [0xA4, 0x08, 0x10, 0, 0x7F, 0, 0, 0])
+        + sdo([0x23, 0x01, 0x12, 0x01, 0x81, 0x06, 0, 0x80])
+        + frame_event(0x681, 8, [0x70, 0, 0, 0, 0, 0, 0, 0]) + wait_event(1500),
     }
 
 

@@ -48,6 +48,9 @@ std::string checkSdo(const Node& node) {
   if (!sdo.valid()) {
     return "SDO server state not valid";
   }
+  if (!node.sdoServers().valid()) {
+    return "an additional SDO server's state is not valid";
+  }
   if (sdo.busy() && node.state() != NmtState::kPreOperational &&
       node.state() != NmtState::kOperational) {
     return std::string("SDO transfer running in ") + describe(node.state());

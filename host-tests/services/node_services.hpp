@@ -43,6 +43,8 @@ struct NodeServices {
                    listeners, clock, settings.staticPdoMappings, router},
         sdo(access, tx, settings.profile.sdo, clock, sdoBuffer, sizeof(sdoBuffer),
             settings.sdoTimeout),
+        sdoServers(access, tx, settings.profile.sdo, clock, sdoServerSlots, sdoBuffer, 0U, 0U,
+                   settings.sdoTimeout, router),
         heartbeat(dictionary, tx, clock),
         sync(dictionary, tx, emcy, clock, router),
         time(dictionary, tx, clock, router),
@@ -55,13 +57,13 @@ struct NodeServices {
                      monitors, 2),
         lssBridge(settings, bitTiming, stored, listeners, nmt),
         lss(tx, lssBridge),
-        nmt(NmtStateMachine::Services{dictionary, settings, clock, listeners, tx, sdo, heartbeat,
-                                      emcy, sync, time, pdos, errorControl, stored, bitTiming, lss,
-                                      router},
+        nmt(NmtStateMachine::Services{dictionary, settings, clock, listeners, tx, sdo, sdoServers,
+                                      heartbeat, emcy, sync, time, pdos, errorControl, stored,
+                                      bitTiming, lss, router},
             settings.nodeId),
         services(ServiceObjects::Hooks{&emcy, &sync, &errorControl.guardingObjects(),
                                        &stored.commands(), &errorControl.consumerObjects(),
-                                       &heartbeat, &time, &emcyConsumer, &pdos}) {
+                                       &heartbeat, &time, &emcyConsumer, &pdos, &sdoServers}) {
     access.setObserver(stored.autoSave());
     pdos.bind();
     EXPECT_TRUE(listeners.add(listener));
@@ -84,6 +86,8 @@ struct NodeServices {
   PdoContext pdoContext;
   uint8_t sdoBuffer[32] = {};
   SdoServer sdo;
+  SdoServerSlot* sdoServerSlots = nullptr;  ///< no additional servers
+  SdoServersChoice sdoServers;
   HeartbeatProducer heartbeat;
   SyncService sync;
   TimeServiceChoice time;

@@ -95,6 +95,21 @@ TEST_F(FuzzRules, AValidCobIdWithARestrictedCanIdIsReported) {
   EXPECT_NE(checkConfiguredCanIds(node()), "");
 }
 
+TEST_F(FuzzRules, AnAdditionalSdoServerAnswersOnItsOwnCanIdOnly) {
+  EXPECT_FALSE(allowedTransmitIds(node(), true).contains(0x6C1U));
+  sdo({0x23, 0x01, 0x12, 0x02, 0xC1, 0x06, 0x00, 0x00});  // 0x1201:02 = 0x6C1
+  EXPECT_TRUE(allowedTransmitIds(node(), true).contains(0x6C1U));
+  EXPECT_FALSE(allowedTransmitIds(node(), true).contains(0x6C2U));
+  EXPECT_EQ(checkConfiguredCanIds(node()), "");
+  node().dictionary().storeUnsigned(0x1201, 1, 0x605);  // bypasses the write checks
+  EXPECT_EQ(checkConfiguredCanIds(node()),
+            "valid SDO server COB-ID 0x605 at 0x1201 has a restricted or 29-bit CAN-ID");
+  node().dictionary().storeUnsigned(0x1201, 1, 0x20000681U);
+  EXPECT_NE(checkConfiguredCanIds(node()), "");
+  node().dictionary().storeUnsigned(0x1201, 1, 0xA0000681U);
+  EXPECT_EQ(checkConfiguredCanIds(node()), "");
+}
+
 TEST_F(FuzzRules, FramesMustHaveTheirFormAndAnAllowedId) {
   const CanIdSet allowed = allowedTransmitIds(node(), true);
   EXPECT_EQ(checkTransmittedFrame(frame(0x701, {0x05}), allowed), "");

@@ -57,6 +57,7 @@ void NmtStateMachine::resetCommunication() noexcept {
   setState(NmtState::kInitialising);
   startPending_ = false;
   services_.sdo.reset();
+  services_.sdoServers.reset();
   services_.heartbeat.stop();
   services_.tx.discardQueued();  // what waited belongs to the state the node leaves
   LssSlaveService& lss = services_.lss;
@@ -136,6 +137,7 @@ void NmtStateMachine::setState(NmtState state) noexcept {
   state_ = state;
   if (state == NmtState::kStopped) {
     services_.sdo.reset();
+    services_.sdoServers.reset();
   }
   if (previous == NmtState::kOperational) {
     services_.pdos.stop();

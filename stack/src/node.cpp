@@ -16,6 +16,9 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
                   listeners_, clock_, settings_.staticPdoMappings, router_},
       sdo_(access_, tx_, settings_.profile.sdo, clock_, memory.sdoBuffer, memory.sdoBufferSize,
            settings_.sdoTimeout),
+      sdoServers_(access_, tx_, settings_.profile.sdo, clock_, memory.sdoServerSlots,
+                  memory.sdoServerBuffers, memory.sdoBufferSize, memory.sdoServerCount,
+                  settings_.sdoTimeout, router_),
       heartbeat_(dictionary_, tx_, clock_),
       sync_(dictionary_, tx_, emcy_, clock_, router_),
       time_(dictionary_, tx_, clock_, router_),
@@ -29,12 +32,12 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       lssBridge_(settings_, bitTiming_, stored_, listeners_, nmt_),
       lss_(tx_, lssBridge_),
       nmt_(NmtStateMachine::Services{dictionary_, settings_, clock_, listeners_, tx_, sdo_,
-                                     heartbeat_, emcy_, sync_, time_, pdos_, errorControl_, stored_,
-                                     bitTiming_, lss_, router_},
+                                     sdoServers_, heartbeat_, emcy_, sync_, time_, pdos_,
+                                     errorControl_, stored_, bitTiming_, lss_, router_},
            settings_.nodeId),
       services_(ServiceObjects::Hooks{&emcy_, &sync_, &errorControl_.guardingObjects(),
                                       &stored_.commands(), &errorControl_.consumerObjects(),
-                                      &heartbeat_, &time_, &emcyConsumer_, &pdos_}) {
+                                      &heartbeat_, &time_, &emcyConsumer_, &pdos_, &sdoServers_}) {
   access_.setObserver(stored_.autoSave());
   pdos_.bind();
 }
@@ -64,6 +67,7 @@ AbortCode Node::writeEntry(uint16_t index, uint8_t subIndex, const uint8_t* data
 void Node::flushTx() noexcept {
   tx_.flush(clock_.now);
   clock_.schedule(sdo_.nextDeadline());  // a block upload burst may go on now
+  clock_.schedule(sdoServers_.nextDeadline());
 }
 
 void Node::start(Microseconds now) noexcept {

@@ -16,6 +16,7 @@ void Node::buildRoutes() noexcept {
   }
   router_.add(cob::kNmt, Route::kNmt);
   router_.add(static_cast<uint16_t>(cob::kSdoRxBase + id), Route::kSdo);
+  sdoServers_.addRoutes(dictionary_, router_);
   router_.add(static_cast<uint16_t>(sync_.canId()), Route::kSync);
   if (time_.consumer()) {
     router_.add(static_cast<uint16_t>(time_.canId()), Route::kTime);
@@ -86,6 +87,8 @@ COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame
     case Route::kSdo: {
       return preOrOperational() && sdo_.onRequest(frame, clock_.now);
     }
+    case Route::kSdoServer:
+      return preOrOperational() && sdoServers_.onRequest(frame, entry.channel, clock_.now);
     case Route::kRpdo:
       return !frame.rtr && nmt_.state() == NmtState::kOperational &&
              pdos_.receive(entry.channel, frame, clock_.now);
@@ -154,7 +157,11 @@ Microseconds Node::runDue() noexcept {
   const Microseconds at = clock_.now;
   // The automatic start first: what entering operational starts (TPDOs) runs in this cycle.
   nmt_.process();
+  if (features::kSdoServers && router_.stale()) {
+    buildRoutes();  // an additional server's new COB-IDs end its transfer before it times out
+  }
   sdo_.process(at);
+  sdoServers_.process(at);
   lss_.process(at);
   tx_.setGate(TransmitPath::kBitTiming, lss_.transmissionSuspended());
   const NmtState state = nmt_.state();
@@ -171,6 +178,7 @@ Microseconds Node::runDue() noexcept {
   }
   tx_.flush(at);
   Microseconds next = earliest(sdo_.nextDeadline(), heartbeat_.nextDeadline());
+  next = earliest(next, sdoServers_.nextDeadline());
   next = earliest(next, errorControl_.nextDeadline());
   next = earliest(next, sync_.nextDeadline());
   next = earliest(next, time_.nextDeadline());

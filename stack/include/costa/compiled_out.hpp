@@ -261,6 +261,30 @@ class AbsentTimeService final : public AbsentObjects {
   uint32_t framesIgnored() const noexcept { return 0; }
 };
 
+/// Additional SDO servers compiled out: no servers, no routes, 0x1201..0x127F do not exist.
+class AbsentSdoServers final : public AbsentObjects {
+ public:
+  template <typename... Ignored>
+  explicit AbsentSdoServers(Ignored&... ignored) noexcept {
+    (static_cast<void>(ignored), ...);
+  }
+  void addRoutes(const od::ObjectDictionary& dictionary, FrameRouter& router) noexcept {
+    (void)dictionary;
+    (void)router;
+  }
+  bool onRequest(const CanFrame& frame, uint8_t server, Microseconds now) noexcept {
+    (void)frame;
+    (void)server;
+    (void)now;
+    return false;
+  }
+  void process(Microseconds now) noexcept { (void)now; }
+  Microseconds nextDeadline() const noexcept { return kNever; }
+  void reset() noexcept {}
+  bool valid() const noexcept { return true; }
+  size_t count() const noexcept { return 0; }
+};
+
 /// EMCY consumer compiled out: no routes, 0x1028 does not exist.
 class AbsentEmcyConsumer final : public AbsentObjects {
  public:

@@ -24,6 +24,7 @@ enum class Route : uint8_t {
   kTime,         ///< TIME (consumer)
   kEmcy,         ///< another node's EMCY (consumer); `channel` is its sub-index of 0x1028
   kSdo,          ///< SDO request to the node's server
+  kSdoServer,    ///< SDO request to an additional server; `channel` is its SdoServers index
   kLss,          ///< LSS master request (0x7E5)
   kRpdo,         ///< an RPDO; `channel` is its RpdoChannel
   kTpdoRequest,  ///< a remote request for a TPDO; `channel` is its TpdoChannel

@@ -38,6 +38,7 @@
 #include "costa/pdo_engine.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/sdo_server.hpp"
+#include "costa/sdo_servers.hpp"
 #include "costa/stored_parameters.hpp"
 #include "costa/sync_service.hpp"
 #include "costa/transmit_path.hpp"
@@ -58,6 +59,7 @@ class NmtStateMachine {
     const NodeListeners& listeners;
     TransmitPath& tx;
     SdoServer& sdo;
+    SdoServersChoice& sdoServers;
     HeartbeatProducer& heartbeat;
     EmcyProducer& emcy;
     SyncService& sync;

@@ -49,6 +49,7 @@
 #include "costa/port/can_id_filter.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/sdo_server.hpp"
+#include "costa/sdo_servers.hpp"
 #include "costa/service_objects.hpp"
 #include "costa/stored_parameters.hpp"
 #include "costa/sync_service.hpp"
@@ -110,7 +111,7 @@ class Node {
 
   // --- Acceptance filters --------------------------------------------------------------------
   /// The CAN-IDs the node listens to now, as acceptance filters for the controller's banks:
-  /// one exact filter per CAN-ID of a service (NMT, SYNC, its SDO server, each valid RPDO, each
+  /// one exact filter per CAN-ID of a service (NMT, SYNC, its SDO servers, each valid RPDO, each
   /// valid TPDO's remote request, LSS), in CAN-ID order, then 0x700/0x780 for the error control
   /// frames (other nodes' heartbeats, node guarding requests) once the node has a node-id, in a
   /// build with the heartbeat consumer or node guarding. Every
@@ -120,8 +121,9 @@ class Node {
   /// from the context that runs the node, when receiveFiltersVersion() changed. O(routes).
   size_t receiveFilters(CanIdFilter* filters, size_t capacity) noexcept;
   /// Changes whenever receiveFilters() may answer differently: reset communication, a node-id
-  /// given by LSS, a PDO's or SYNC's COB-ID written. A port keeps the value it programmed its
-  /// filters for and compares it after each onFrame() and process(). O(1).
+  /// given by LSS, a PDO's, SYNC's or additional SDO server's COB-ID written. A port keeps the
+  /// value it programmed its filters for and compares it after each onFrame() and process().
+  /// O(1).
   uint32_t receiveFiltersVersion() const noexcept { return router_.changes(); }
 
   // --- NMT ------------------------------------------------------------------------------------
@@ -215,6 +217,8 @@ class Node {
   const LssSlaveService& lss() const noexcept { return lss_; }
   /// The SDO server (read-only: whether a transfer runs, consistency checks).
   const SdoServer& sdo() const noexcept { return sdo_; }
+  /// The additional SDO servers (0x1201..0x127F; a stand-in without features::kSdoServers).
+  const SdoServersChoice& sdoServers() const noexcept { return sdoServers_; }
   const PdoEngine& pdos() const noexcept { return pdos_; }
   /// The parameter store when the node has storage (laid out), else null.
   ParameterStore* parameterStore() noexcept { return stored_.store(); }
@@ -252,6 +256,7 @@ class Node {
   EmcyProducer emcy_;
   PdoContext pdoContext_;
   SdoServer sdo_;
+  SdoServersChoice sdoServers_;
   HeartbeatProducer heartbeat_;
   SyncService sync_;
   TimeServiceChoice time_;

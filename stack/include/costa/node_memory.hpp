@@ -11,6 +11,7 @@
 #include "costa/heartbeat_consumer.hpp"
 #include "costa/hook_registry.hpp"
 #include "costa/rpdo_channel.hpp"
+#include "costa/sdo_servers.hpp"
 #include "costa/tpdo_channel.hpp"
 #include "costa/tx_queue.hpp"
 
@@ -37,6 +38,9 @@ struct NodeMemory {
   size_t heartbeatMonitorCapacity;
   RouteEntry* routes;  ///< The frame routing table: NMT, SYNC, SDO, LSS, TIME and every PDO.
   size_t routeCapacity;
+  SdoServerSlot* sdoServerSlots;  ///< One per additional SDO server (0x1201..0x127F).
+  uint8_t* sdoServerBuffers;      ///< sdoBufferSize bytes per additional SDO server.
+  size_t sdoServerCount;
 };
 
 /// Compile-time capacities of a NodeInstance beyond what the dictionary dictates.
@@ -53,21 +57,46 @@ constexpr size_t atLeastOne(size_t n) {
   return n == 0U ? 1U : n;
 }
 
+/// The additional SDO servers' storage; a base class, so that none takes no room.
+template <size_t kCount, size_t kBytes>
+struct SdoServerStorage {
+  SdoServerSlot sdoServerSlots[kCount]{};
+  uint8_t sdoServerBuffers[kCount][kBytes]{};
+  SdoServerSlot* slots() noexcept { return sdoServerSlots; }
+  uint8_t* buffers() noexcept { return &sdoServerBuffers[0][0]; }
+};
+template <size_t kBytes>
+struct SdoServerStorage<0, kBytes> {
+  static SdoServerSlot* slots() noexcept { return nullptr; }
+  static uint8_t* buffers() noexcept { return nullptr; }
+};
+
+template <typename DictionaryCapacity, typename Extra>
+struct SdoSizes {
+  static constexpr size_t kBytes = DictionaryCapacity::kLargestValue > Extra::kMinimumSdoBuffer
+                                       ? DictionaryCapacity::kLargestValue
+                                       : Extra::kMinimumSdoBuffer;
+  static constexpr size_t kServers = features::kSdoServers ? DictionaryCapacity::kSdoServers : 0U;
+};
+
 /// Storage of a NodeInstance; a base class so that it is initialised before the Node base.
 template <typename Values, typename DictionaryCapacity, typename Extra>
-struct NodeBuffers {
-  static constexpr size_t kSdoBytes = DictionaryCapacity::kLargestValue > Extra::kMinimumSdoBuffer
-                                          ? DictionaryCapacity::kLargestValue
-                                          : Extra::kMinimumSdoBuffer;
+struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServers,
+                                      SdoSizes<DictionaryCapacity, Extra>::kBytes> {
+  using SdoServerRoom = SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServers,
+                                         SdoSizes<DictionaryCapacity, Extra>::kBytes>;
+  static constexpr size_t kSdoBytes = SdoSizes<DictionaryCapacity, Extra>::kBytes;
+  static constexpr size_t kSdoServers = SdoSizes<DictionaryCapacity, Extra>::kServers;
   static constexpr size_t kRpdos = atLeastOne(DictionaryCapacity::kRpdoCount);
   static constexpr size_t kTpdos = atLeastOne(DictionaryCapacity::kTpdoCount);
   static constexpr size_t kMonitors =
       features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
   static constexpr size_t kEmcyConsumers =
       features::kEmcyConsumer ? DictionaryCapacity::kEmcyConsumers : 0U;
-  /// NMT, SYNC, SDO, LSS, TIME (when compiled in), one per PDO and per consumed EMCY CAN-ID.
+  /// NMT, SYNC, SDO, LSS, TIME (when compiled in), one per PDO, per consumed EMCY CAN-ID and
+  /// per additional SDO server.
   static constexpr size_t kRoutes =
-      4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos + kEmcyConsumers;
+      4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos + kEmcyConsumers + kSdoServers;
 
   Values values{};
   QueuedFrame tx[Extra::kTxQueueDepth]{};
@@ -99,7 +128,10 @@ struct NodeBuffers {
                       monitors,
                       kMonitors,
                       routes,
-                      kRoutes};
+                      kRoutes,
+                      SdoServerRoom::slots(),
+                      SdoServerRoom::buffers(),
+                      kSdoServers};
   }
 };
 }  // namespace detail

@@ -1,5 +1,6 @@
-// The sending side of the SDO server's channel (0x580 + node-id): responses, aborts, and the
-// room left in the transmit queue for a burst of block upload segments.
+// The sending side of an SDO server's channel (0x580 + node-id for the default server, the
+// COB-ID server -> client of 0x1201..0x127F for the others): responses, aborts, and the room
+// left in the transmit queue for a burst of block upload segments.
 #pragma once
 
 #include <stddef.h>
@@ -20,11 +21,14 @@ class SdoChannel {
   SdoChannel(TransmitPath& tx, bool distinguishHighAndLowValues) noexcept
       : tx_(tx), distinguishHighAndLowValues_(distinguishHighAndLowValues) {}
 
-  void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
+  /// Responses on 0x580 + `nodeId` (the default server).
+  void setNodeId(uint8_t nodeId) noexcept { canId_ = cob::kSdoTxBase + nodeId; }
+  /// Responses on `canId` (an 11-bit CAN-ID: an additional server).
+  void setCanId(uint16_t canId) noexcept { canId_ = canId; }
 
-  /// Makes `frame` (as constructed: all zero) an 8-byte response on 0x580 + node-id.
+  /// Makes `frame` (as constructed: all zero) an 8-byte response on the channel's CAN-ID.
   void address(CanFrame& frame) const noexcept {
-    frame.id = cob::kSdoTxBase + nodeId_;
+    frame.id = canId_;
     frame.dlc = 8;
   }
   void send(const CanFrame& frame) noexcept { tx_.send(frame); }
@@ -55,7 +59,7 @@ class SdoChannel {
  private:
   TransmitPath& tx_;
   bool distinguishHighAndLowValues_;
-  uint8_t nodeId_ = 0;
+  uint32_t canId_ = cob::kSdoTxBase;
 };
 
 }  // namespace costa

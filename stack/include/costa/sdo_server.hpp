@@ -1,6 +1,7 @@
 // SDO server (CiA 301 7.2.4): expedited, segmented and block upload and download on the default
-// SDO channel 0x600+id / 0x580+id. Block transfers are optional (features::kSdoBlockTransfer):
-// compiled out, their initiate requests are unknown command specifiers (0x05040001).
+// SDO channel 0x600+id / 0x580+id, or on an additional server's CAN-IDs (sdo_servers.hpp). Block
+// transfers are optional (features::kSdoBlockTransfer): compiled out, their initiate requests are
+// unknown command specifiers (0x05040001).
 #pragma once
 
 #include <stddef.h>
@@ -33,6 +34,8 @@ class SdoServer {
             uint8_t* buffer, size_t bufferSize, Microseconds timeout) noexcept;
 
   void setNodeId(uint8_t nodeId) noexcept { channel_.setNodeId(nodeId); }
+  /// Responses on `canId` instead (an additional server's COB-ID server -> client).
+  void setResponseCanId(uint16_t canId) noexcept { channel_.setCanId(canId); }
 
   /// Handles a frame received on 0x600+id. RTR frames and frames with a DLC other than 8 are
   /// ignored, as CiA 301 requires (returns false for them), except requests of at least

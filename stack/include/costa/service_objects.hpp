@@ -1,7 +1,7 @@
 // Which of the node's services owns an object of the communication area: the hook the stack
 // itself puts behind 0x1003, 0x1005..0x1007, 0x100C, 0x100D, 0x1010, 0x1011, 0x1012, 0x1014,
-// 0x1016, 0x1017, 0x1019, 0x1028 and 0x1400..0x1BFF. A switch, not a table: no RAM per object,
-// O(1). Application hooks (HookRegistry) take precedence over these.
+// 0x1016, 0x1017, 0x1019, 0x1028, 0x1201..0x127F and 0x1400..0x1BFF. A switch, not a table: no RAM
+// per object, O(1). Application hooks (HookRegistry) take precedence over these.
 #pragma once
 
 #include <stdint.h>
@@ -24,18 +24,25 @@ class ServiceObjects {
     ObjectHook* time;          ///< 0x1012
     ObjectHook* emcyConsumer;  ///< 0x1028
     ObjectHook* pdos;          ///< 0x1400..0x1BFF
+    ObjectHook* sdoServers;    ///< 0x1201..0x127F
   };
 
   explicit ServiceObjects(const Hooks& hooks) noexcept
       : hooks_{{nullptr, hooks.emcy, hooks.sync, hooks.guarding, hooks.store, hooks.consumer,
                 hooks.heartbeat, hooks.time, hooks.emcyConsumer},
-               hooks.pdos} {}
+               hooks.pdos,
+               hooks.sdoServers} {}
 
   /// The hook of the service that owns `index` when that service refines reads (prepareRead:
   /// the store commands' 0x1010/0x1011, which read 1 or 0 by whether storage is there, and the
   /// stand-ins of compiled-out services, whose objects do not exist), else null: the other
   /// services read as the dictionary does.
   ObjectHook* findReader(uint16_t index) const noexcept {
+    if constexpr (!features::kSdoServers) {
+      if (index - 0x1201U <= 0x127FU - 0x1201U) {
+        return hooks_.sdoServers;  // the stand-in: they do not exist
+      }
+    }
     const uint32_t offset = index - 0x1000U;
     if (offset >= sizeof(kOwners)) {
       return nullptr;
@@ -44,13 +51,18 @@ class ServiceObjects {
     return (kReaders & (1U << owner)) != 0U ? hooks_.of[owner] : nullptr;
   }
 
-  /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x102F.
+  /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x102F;
+  /// range tests for the PDOs and the additional SDO servers.
   ObjectHook* find(uint16_t index) const noexcept {
     if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
       return hooks_.pdos;
     }
     const uint32_t offset = index - 0x1000U;
-    return offset < sizeof(kOwners) ? hooks_.of[kOwners[offset]] : nullptr;
+    if (offset < sizeof(kOwners)) {
+      return hooks_.of[kOwners[offset]];
+    }
+    // cppcheck-suppress knownConditionTrueFalse ; true for 0x1201..0x127F
+    return index - 0x1201U <= 0x127FU - 0x1201U ? hooks_.sdoServers : nullptr;
   }
 
  private:
@@ -73,6 +85,7 @@ class ServiceObjects {
     ObjectHook* of[9];  ///< [0] null, emcy, sync, guarding, store, consumer, heartbeat, time,
                         ///< EMCY consumer
     ObjectHook* pdos;
+    ObjectHook* sdoServers;
   };
   Table hooks_;
 };
