@@ -47,6 +47,7 @@ TEST(FeaturesBuild, IsTheVariantCMakeAskedFor) {
   add(features::kParameterStorage, "PARAMETER_STORAGE");
   add(features::kTime, "TIME");
   add(features::kEmcyConsumer, "EMCY_CONSUMER");
+  add(features::kSafety, "SAFETY");
   EXPECT_EQ(compiledIn, COSTA_EXPECTED_FEATURES);
 }
 
@@ -159,6 +160,19 @@ TEST_F(FeaturesTest, OtherNodesEmergenciesAreIgnoredWithoutEmcyConsumer) {
   const uint32_t before = ignored();
   EXPECT_EQ(play("rx 082 [8] 10 81 11 00 00 00 00 00  # node 2: CAN overrun\n"), "");
   EXPECT_EQ(ignored() - before, features::kEmcyConsumer ? 0U : 1U);
+}
+
+TEST_F(FeaturesTest, GlobalFailSafeIsIgnoredWithoutSafety) {
+  EXPECT_EQ(play("tx 701 [1] 00\n"
+                 "rx 601 [8] 40 00 13 00 00 00 00 00  # 0x1300, GFC valid\n" +
+                 lines(features::kSafety, "tx 581 [8] 4F 00 13 00 01 00 00 00",
+                       "tx 581 [8] 80 00 13 00 00 00 02 06  # object does not exist")),
+            "");
+  const uint32_t before = ignored();
+  EXPECT_EQ(play("rx 001 [0]\n"), "");
+  EXPECT_EQ(ignored() - before, features::kSafety ? 0U : 1U);
+  EXPECT_EQ(bus_->node().sendGlobalFailSafe(), features::kSafety);
+  EXPECT_EQ(play(lines(features::kSafety, "tx 001 [0]", "")), "");
 }
 
 TEST_F(FeaturesTest, NothingIsStoredWithoutParameterStorage) {

@@ -175,6 +175,9 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
       !restrictedCanId(time & kIdBits)) {
     ids.add(time & kIdBits);
   }
+  if (dictionary.readUnsigned(0x1300, 0, 0) == 1U) {
+    ids.add(0x001);  // GFC (CiA 304) where 0x1300 makes it valid
+  }
   if (state != NmtState::kOperational) {
     return ids;
   }
@@ -281,6 +284,9 @@ const char* transmittedFrameFault(const CanFrame& frame, const CanIdSet& allowed
       frame.id > cob::kErrorControlBase && frame.id <= cob::kErrorControlBase + 127U;
   if ((sdo || frame.id == cob::kLssToMaster) && frame.dlc != 8U) {
     return "SDO and LSS frames have 8 bytes";
+  }
+  if (frame.id == 0x001U && frame.dlc != 0U) {
+    return "GFC has no data";
   }
   if (errorControl && frame.dlc != 1U) {
     return "boot-up, heartbeat and guarding frames have 1 byte";

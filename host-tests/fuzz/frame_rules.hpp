@@ -36,7 +36,8 @@ bool restrictedCanId(uint32_t id);
 ///  * with a node-id n (1..127): boot-up/heartbeat/guarding 0x700 + n in any state;
 ///  * in pre-operational and operational: SDO 0x580 + n; EMCY: the COB-ID of 0x1014 when valid
 ///    and not restricted (0x80 + n without 0x1014); SYNC: the COB-ID of 0x1005 when it
-///    produces SYNC (bit 30) and the id is not restricted; TIME likewise with 0x1012;
+///    produces SYNC (bit 30) and the id is not restricted; TIME likewise with 0x1012; GFC
+///    0x001 (without data) when 0x1300 is 1 (CiA 304);
 ///  * in operational: each TPDO whose COB-ID (0x1800..0x19FF sub-index 1) is valid, 11-bit and
 ///    allowed for a TPDO (the profile's range, else not restricted).
 CanIdSet allowedTransmitIds(const Node& node, bool lss);

@@ -154,6 +154,9 @@ def synthetic():
         "emcy-consumer": bytes([0]) + frame_event(0x082, 8, [0x10, 0x81, 0x11, 0, 0, 0, 0, 0])
         + frame_event(0x083, 7, [0, 0, 0, 0, 0, 0, 0])
         + frame_event(0x084, 8, [0x20, 0x81, 0x11, 0, 0, 0, 0, 0]),
+        # The global fail-safe command (CiA 304), then one with data and one remote frame.
+        "gfc": bytes([0]) + frame_event(0x001, 0, []) + frame_event(0x001, 1, [0])
+        + frame_event(0x001, 0, [], rtr=True),
     }
 
 

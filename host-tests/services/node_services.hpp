@@ -61,7 +61,7 @@ struct NodeServices {
             settings.nodeId),
         services(ServiceObjects::Hooks{&emcy, &sync, &errorControl.guardingObjects(),
                                        &stored.commands(), &errorControl.consumerObjects(),
-                                       &heartbeat, &time, &emcyConsumer, &pdos}) {
+                                       &heartbeat, &time, &emcyConsumer, nullptr, &pdos}) {
     access.setObserver(stored.autoSave());
     pdos.bind();
     EXPECT_TRUE(listeners.add(listener));

@@ -20,6 +20,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       sync_(dictionary_, tx_, emcy_, clock_, router_),
       time_(dictionary_, tx_, clock_, router_),
       emcyConsumer_(listeners_, router_),
+      safety_(dictionary_, tx_, listeners_, router_),
       pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
       stored_(dictionary_, settings_, listeners_),
       bitTiming_(settings_.bitRateControl, settings_.bitTiming),
@@ -34,7 +35,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
            settings_.nodeId),
       services_(ServiceObjects::Hooks{&emcy_, &sync_, &errorControl_.guardingObjects(),
                                       &stored_.commands(), &errorControl_.consumerObjects(),
-                                      &heartbeat_, &time_, &emcyConsumer_, &pdos_}) {
+                                      &heartbeat_, &time_, &emcyConsumer_, &safety_, &pdos_}) {
   access_.setObserver(stored_.autoSave());
   pdos_.bind();
 }

@@ -21,6 +21,7 @@ void Node::buildRoutes() noexcept {
     router_.add(static_cast<uint16_t>(time_.canId()), Route::kTime);
   }
   EmcyConsumerChoice::addRoutes(dictionary_, router_);
+  safety_.addRoutes(router_);
   for (size_t i = 0; i < pdos_.rpdoCount(); ++i) {
     const RpdoChannel& rpdo = pdos_.rpdo(i);
     if (rpdo.valid()) {
@@ -82,6 +83,7 @@ COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame
       return true;
     }
     case Route::kTime: return preOrOperational() && time_.onFrame(frame, clock_.now);
+    case Route::kGfc: return nmt_.state() != NmtState::kInitialising && safety_.onGfc(frame);
     case Route::kEmcy: return preOrOperational() && emcyConsumer_.onFrame(frame, entry.channel);
     case Route::kSdo: {
       return preOrOperational() && sdo_.onRequest(frame, clock_.now);

@@ -16,6 +16,7 @@
 #include "costa/node_guarding.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/parameter_store.hpp"
+#include "costa/safety_service.hpp"
 #include "costa/store_commands.hpp"
 #include "costa/time_service.hpp"
 
@@ -279,6 +280,30 @@ class AbsentEmcyConsumer final : public AbsentObjects {
   }
   uint32_t framesIgnored() const noexcept { return 0; }
 };
+
+/// Safety compiled out: no GFC, no SRDO, 0x1300..0x13FF do not exist.
+class AbsentSafetyService final : public AbsentObjects {
+ public:
+  AbsentSafetyService(od::ObjectDictionary& dictionary, TransmitPath& tx,
+                      const NodeListeners& listeners, FrameRouter& routes) noexcept {
+    (void)dictionary;
+    (void)tx;
+    (void)listeners;
+    (void)routes;
+  }
+  void addRoutes(FrameRouter& router) const noexcept { (void)router; }
+  bool onGfc(const CanFrame& frame) noexcept {
+    (void)frame;
+    return false;
+  }
+  bool sendGfc(bool allowed) noexcept {
+    (void)allowed;
+    return false;
+  }
+};
+
+/// The node's safety service (GFC, SRDOs): the service, or its stand-in.
+using SafetyServiceChoice = ServiceIf<features::kSafety, SafetyService, AbsentSafetyService>;
 
 /// The node's EMCY consumer: the service, or its stand-in.
 using EmcyConsumerChoice = ServiceIf<features::kEmcyConsumer, EmcyConsumer, AbsentEmcyConsumer>;

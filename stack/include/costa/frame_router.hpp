@@ -22,6 +22,7 @@ enum class Route : uint8_t {
   kNmt,          ///< NMT command (0x000)
   kSync,         ///< SYNC (consumer)
   kTime,         ///< TIME (consumer)
+  kGfc,          ///< global fail-safe command (0x001, CiA 304)
   kEmcy,         ///< another node's EMCY (consumer); `channel` is its sub-index of 0x1028
   kSdo,          ///< SDO request to the node's server
   kLss,          ///< LSS master request (0x7E5)

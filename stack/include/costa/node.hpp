@@ -201,6 +201,11 @@ class Node {
     time_.setProducerPeriod(period, clock_.now);
   }
 
+  // --- Safety, CiA 304 (features::kSafety) --------------------------------------------------
+  /// Sends the global fail-safe command (0x001) when 0x1300 enables it and the node is
+  /// pre-operational or operational; false otherwise.
+  bool sendGlobalFailSafe() noexcept { return safety_.sendGfc(preOrOperational()); }
+
   // --- Views ----------------------------------------------------------------------------------
   od::ObjectDictionary& dictionary() noexcept { return dictionary_; }
   const od::ObjectDictionary& dictionary() const noexcept { return dictionary_; }
@@ -256,6 +261,7 @@ class Node {
   SyncService sync_;
   TimeServiceChoice time_;
   EmcyConsumerChoice emcyConsumer_;
+  SafetyServiceChoice safety_;
   PdoEngine pdos_;
   StoredParameters stored_;
   BitTimingSwitch bitTiming_;

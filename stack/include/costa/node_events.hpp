@@ -43,6 +43,8 @@ class NodeEvents {
   virtual void onSync(uint8_t counter) noexcept { (void)counter; }
   /// An emergency message on a CAN-ID the EMCY consumer (0x1028) watches.
   virtual void onEmcyReceived(const EmcyMessage& emcy) noexcept { (void)emcy; }
+  /// A global fail-safe command (GFC, CiA 304) was received: enter the safe state.
+  virtual void onGlobalFailSafe() noexcept {}
   /// A monitored heartbeat (0x1016) stopped arriving / arrived again after a timeout.
   virtual void onHeartbeatTimeout(uint8_t nodeId) noexcept { (void)nodeId; }
   virtual void onHeartbeatResumed(uint8_t nodeId) noexcept { (void)nodeId; }

@@ -65,9 +65,11 @@ struct NodeBuffers {
       features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
   static constexpr size_t kEmcyConsumers =
       features::kEmcyConsumer ? DictionaryCapacity::kEmcyConsumers : 0U;
-  /// NMT, SYNC, SDO, LSS, TIME (when compiled in), one per PDO and per consumed EMCY CAN-ID.
-  static constexpr size_t kRoutes =
-      4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos + kEmcyConsumers;
+  /// NMT, SYNC, SDO, LSS, TIME and GFC (when compiled in), one per PDO and per consumed EMCY
+  /// CAN-ID.
+  static constexpr size_t kRoutes = 4U + (features::kTime ? 1U : 0U) +
+                                    (features::kSafety ? 1U : 0U) + kRpdos + kTpdos +
+                                    kEmcyConsumers;
 
   Values values{};
   QueuedFrame tx[Extra::kTxQueueDepth]{};

@@ -1,7 +1,7 @@
 // Which of the node's services owns an object of the communication area: the hook the stack
 // itself puts behind 0x1003, 0x1005..0x1007, 0x100C, 0x100D, 0x1010, 0x1011, 0x1012, 0x1014,
-// 0x1016, 0x1017, 0x1019, 0x1028 and 0x1400..0x1BFF. A switch, not a table: no RAM per object,
-// O(1). Application hooks (HookRegistry) take precedence over these.
+// 0x1016, 0x1017, 0x1019, 0x1028, 0x1300..0x13FF and 0x1400..0x1BFF. A switch, not a table: no RAM
+// per object, O(1). Application hooks (HookRegistry) take precedence over these.
 #pragma once
 
 #include <stdint.h>
@@ -23,19 +23,24 @@ class ServiceObjects {
     ObjectHook* heartbeat;     ///< 0x1017
     ObjectHook* time;          ///< 0x1012
     ObjectHook* emcyConsumer;  ///< 0x1028
+    ObjectHook* safety;        ///< 0x1300..0x13FF
     ObjectHook* pdos;          ///< 0x1400..0x1BFF
   };
 
   explicit ServiceObjects(const Hooks& hooks) noexcept
       : hooks_{{nullptr, hooks.emcy, hooks.sync, hooks.guarding, hooks.store, hooks.consumer,
                 hooks.heartbeat, hooks.time, hooks.emcyConsumer},
-               hooks.pdos} {}
+               hooks.pdos,
+               hooks.safety} {}
 
   /// The hook of the service that owns `index` when that service refines reads (prepareRead:
   /// the store commands' 0x1010/0x1011, which read 1 or 0 by whether storage is there, and the
   /// stand-ins of compiled-out services, whose objects do not exist), else null: the other
   /// services read as the dictionary does.
   ObjectHook* findReader(uint16_t index) const noexcept {
+    if (index - 0x1300U <= 0xFFU) {
+      return features::kSafety ? nullptr : hooks_.safety;
+    }
     const uint32_t offset = index - 0x1000U;
     if (offset >= sizeof(kOwners)) {
       return nullptr;
@@ -48,6 +53,9 @@ class ServiceObjects {
   ObjectHook* find(uint16_t index) const noexcept {
     if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
       return hooks_.pdos;
+    }
+    if (index - 0x1300U <= 0xFFU) {
+      return hooks_.safety;
     }
     const uint32_t offset = index - 0x1000U;
     return offset < sizeof(kOwners) ? hooks_.of[kOwners[offset]] : nullptr;
@@ -73,6 +81,7 @@ class ServiceObjects {
     ObjectHook* of[9];  ///< [0] null, emcy, sync, guarding, store, consumer, heartbeat, time,
                         ///< EMCY consumer
     ObjectHook* pdos;
+    ObjectHook* safety;
   };
   Table hooks_;
 };
