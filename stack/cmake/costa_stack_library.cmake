@@ -78,7 +78,7 @@ set(COSTA_STACK_NODE_GUARDING_SOURCES node_guarding.cpp)
 set(COSTA_STACK_HEARTBEAT_CONSUMER_SOURCES heartbeat_consumer.cpp)
 set(COSTA_STACK_TIME_SOURCES time_service.cpp)
 set(COSTA_STACK_EMCY_CONSUMER_SOURCES emcy_consumer.cpp)
-set(COSTA_STACK_SAFETY_SOURCES safety_service.cpp)
+set(COSTA_STACK_SAFETY_SOURCES safety_service.cpp srdo_channel.cpp srdo_configuration.cpp)
 set(COSTA_STACK_PARAMETER_STORAGE_SOURCES
   parameter_store.cpp parameter_store_layout.cpp store_commands.cpp stored_image.cpp)
 

@@ -20,7 +20,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       sync_(dictionary_, tx_, emcy_, clock_, router_),
       time_(dictionary_, tx_, clock_, router_),
       emcyConsumer_(listeners_, router_),
-      safety_(dictionary_, tx_, listeners_, router_),
+      safety_(SafetyService::Services{access_, tx_, emcy_, listeners_, router_, nmt_, clock_}),
       pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
       stored_(dictionary_, settings_, listeners_),
       bitTiming_(settings_.bitRateControl, settings_.bitTiming),

@@ -281,16 +281,11 @@ class AbsentEmcyConsumer final : public AbsentObjects {
   uint32_t framesIgnored() const noexcept { return 0; }
 };
 
-/// Safety compiled out: no GFC, no SRDO, 0x1300..0x13FF do not exist.
+/// Safety compiled out: no GFC, no SRDO, 0x1300..0x13FF do not exist; nothing supervises the
+/// working state, which is always allowed.
 class AbsentSafetyService final : public AbsentObjects {
  public:
-  AbsentSafetyService(od::ObjectDictionary& dictionary, TransmitPath& tx,
-                      const NodeListeners& listeners, FrameRouter& routes) noexcept {
-    (void)dictionary;
-    (void)tx;
-    (void)listeners;
-    (void)routes;
-  }
+  explicit AbsentSafetyService(const SafetyService::Services& services) noexcept { (void)services; }
   void addRoutes(FrameRouter& router) const noexcept { (void)router; }
   bool onGfc(const CanFrame& frame) noexcept {
     (void)frame;
@@ -300,6 +295,15 @@ class AbsentSafetyService final : public AbsentObjects {
     (void)allowed;
     return false;
   }
+  bool onSrdo(const CanFrame& frame, uint8_t channel, Microseconds now) noexcept {
+    (void)frame;
+    (void)channel;
+    (void)now;
+    return false;
+  }
+  void process(Microseconds now) noexcept { (void)now; }
+  Microseconds nextDeadline() const noexcept { return kNever; }
+  bool workingStateAllowed() const noexcept { return true; }
 };
 
 /// The node's safety service (GFC, SRDOs): the service, or its stand-in.

@@ -11,6 +11,7 @@
 #include "costa/heartbeat_consumer.hpp"
 #include "costa/hook_registry.hpp"
 #include "costa/rpdo_channel.hpp"
+#include "costa/safety_service.hpp"
 #include "costa/tpdo_channel.hpp"
 #include "costa/tx_queue.hpp"
 
@@ -65,11 +66,16 @@ struct NodeBuffers {
       features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
   static constexpr size_t kEmcyConsumers =
       features::kEmcyConsumer ? DictionaryCapacity::kEmcyConsumers : 0U;
-  /// NMT, SYNC, SDO, LSS, TIME and GFC (when compiled in), one per PDO and per consumed EMCY
-  /// CAN-ID.
-  static constexpr size_t kRoutes = 4U + (features::kTime ? 1U : 0U) +
-                                    (features::kSafety ? 1U : 0U) + kRpdos + kTpdos +
-                                    kEmcyConsumers;
+  /// Two per SRDO the safety service runs (its normal and inverted CAN-IDs), and GFC.
+  static constexpr size_t kSafetyRoutes =
+      features::kSafety ? 1U + 2U * (DictionaryCapacity::kSrdoCount < SafetyService::kSrdoCapacity
+                                         ? DictionaryCapacity::kSrdoCount
+                                         : SafetyService::kSrdoCapacity)
+                        : 0U;
+  /// NMT, SYNC, SDO, LSS, TIME (when compiled in), one per PDO and per consumed EMCY CAN-ID,
+  /// and the safety service's.
+  static constexpr size_t kRoutes =
+      4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos + kEmcyConsumers + kSafetyRoutes;
 
   Values values{};
   QueuedFrame tx[Extra::kTxQueueDepth]{};
