@@ -186,6 +186,17 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
       ids.add(cob.id);
     }
   });
+  // Transmit SRDOs (CiA 304): their two COB-IDs, which CiA 304 keeps in 0x101..0x180.
+  for (uint16_t index = 0x1301; index <= 0x1340; ++index) {
+    if (dictionary.readUnsigned(index, 1, 0) == 1U) {
+      for (uint8_t sub = 5; sub <= 6; ++sub) {
+        const auto id = static_cast<uint32_t>(dictionary.readUnsigned(index, sub, 0));
+        if (id >= 0x101U && id <= 0x180U) {
+          ids.add(id);
+        }
+      }
+    }
+  }
   return ids;
 }
 
@@ -217,6 +228,15 @@ std::string checkConfiguredCanIds(const Node& node) {
     if ((entry & kInvalidBit) == 0U &&
         (restrictedCanId(entry & kIdBits) || !plainStandardId(entry))) {
       return "valid EMCY consumer entry " + hex(entry) + " has a restricted or 29-bit CAN-ID";
+    }
+  }
+  for (uint16_t index = 0x1301; index <= 0x1340; ++index) {
+    const uint64_t direction = dictionary.readUnsigned(index, 1, 0);
+    const uint64_t normal = dictionary.readUnsigned(index, 5, 0x101);
+    const uint64_t inverted = dictionary.readUnsigned(index, 6, 0x102);
+    if (direction != 0U && (normal < 0x101U || normal > 0x180U || (normal & 1U) == 0U ||
+                            inverted < 0x101U || inverted > 0x180U || (inverted & 1U) != 0U)) {
+      return "SRDO " + hex(index) + " has a COB-ID outside 0x101..0x180 or of the wrong parity";
     }
   }
   if (cobIds.time.valid()) {
