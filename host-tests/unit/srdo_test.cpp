@@ -221,6 +221,8 @@ TEST_F(SrdoTest, WritesFollowTheRulesAndInvalidateTheConfiguration) {
     tx 581 [8] 80 01 13 02 30 00 09 06
     rx 601 [8] 2F 01 13 03 00 00 00 00   # SRVT 0
     tx 581 [8] 80 01 13 03 30 00 09 06
+    rx 601 [8] 27 01 13 02 C8 00 00 00   # SCT in 3 bytes
+    tx 581 [8] 80 01 13 02 12 00 07 06
     rx 601 [8] 2F 01 13 04 FD 00 00 00   # transmission type 253
     tx 581 [8] 80 01 13 04 30 00 09 06
     rx 601 [8] 23 01 13 05 02 01 00 00   # normal data on an even COB-ID

@@ -108,7 +108,7 @@ AbortCode checkSrdoWrite(const od::ObjectDictionary& dictionary, const od::Entry
                          const uint8_t* data, size_t length) noexcept {
   const uint16_t index = ref.index();
   const uint8_t sub = ref.subIndex();
-  if (length == 0U || length > 4U) {
+  if (length != ref.size() || length > 4U) {
     return AbortCode::kNone;  // the dictionary's own length check answers
   }
   uint32_t value = 0;
