@@ -89,6 +89,7 @@ bool SafetyService::sendGfc(bool allowed) noexcept {
 void SafetyService::start(Microseconds now) noexcept {
   started_ = true;
   safe_ = false;
+  active_ = 0;
   const od::ObjectDictionary& dictionary = s_.access.dictionary();
   const bool anySrdo = dictionary.findObject(srdo::kConfigurationValid) != nullptr;
   if (anySrdo && dictionary.readUnsigned(srdo::kConfigurationValid, 0, 0) != srdo::kValid) {
@@ -109,6 +110,7 @@ void SafetyService::start(Microseconds now) noexcept {
       return;
     }
     channels_[number - 1U].start(configuration, now);
+    active_ = number;
   }
   running_ = true;
 }
@@ -210,15 +212,18 @@ bool SafetyService::onSrdo(const CanFrame& frame, uint8_t channel, Microseconds 
 
 void SafetyService::process(Microseconds now) noexcept {
   if (!operational()) {
-    started_ = false;
-    safe_ = false;
-    stop();
+    if (started_) {
+      started_ = false;
+      safe_ = false;
+      stop();
+    }
     return;
   }
   if (!started_) {
     start(now);
   }
-  for (SrdoChannel& channel : channels_) {
+  for (uint8_t slot = 0; running_ && slot < active_; ++slot) {
+    SrdoChannel& channel = channels_[slot];
     const SrdoFailure late = channel.checkDeadlines(now);
     if (late != SrdoFailure::kNone) {
       fail(late, channel.configuration().number);
@@ -234,8 +239,8 @@ void SafetyService::process(Microseconds now) noexcept {
 
 Microseconds SafetyService::nextDeadline() const noexcept {
   Microseconds next = kNever;
-  for (const SrdoChannel& channel : channels_) {
-    next = earliest(next, channel.nextDeadline());
+  for (uint8_t slot = 0; running_ && slot < active_; ++slot) {
+    next = earliest(next, channels_[slot].nextDeadline());
   }
   return next;
 }

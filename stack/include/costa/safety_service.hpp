@@ -99,6 +99,7 @@ class SafetyService : public ObjectHook {
 
   Services s_;
   SrdoChannel channels_[kSrdoCapacity];
+  uint8_t active_ = 0;    ///< slots up to the last SRDO started
   bool started_ = false;  ///< operational seen: the SRDOs were started (or failed to)
   bool running_ = false;  ///< started with a valid configuration
   bool safe_ = false;     ///< a failure since operational was entered

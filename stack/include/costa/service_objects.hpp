@@ -54,6 +54,7 @@ class ServiceObjects {
     if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
       return hooks_.pdos;
     }
+    // cppcheck-suppress knownConditionTrueFalse ; false only for a call site's constant index
     if (index - 0x1300U <= 0xFFU) {
       return hooks_.safety;
     }
