@@ -38,28 +38,25 @@ class ServiceObjects {
   /// stand-ins of compiled-out services, whose objects do not exist), else null: the other
   /// services read as the dictionary does.
   ObjectHook* findReader(uint16_t index) const noexcept {
-    if (index - 0x1300U <= 0xFFU) {
-      return features::kSafety ? nullptr : hooks_.safety;
-    }
     const uint32_t offset = index - 0x1000U;
-    if (offset >= sizeof(kOwners)) {
-      return nullptr;
+    if (offset < sizeof(kOwners)) {
+      const uint8_t owner = kOwners[offset];
+      return (kReaders & (1U << owner)) != 0U ? hooks_.of[owner] : nullptr;
     }
-    const uint8_t owner = kOwners[offset];
-    return (kReaders & (1U << owner)) != 0U ? hooks_.of[owner] : nullptr;
+    return !features::kSafety && index - 0x1300U <= 0xFFU ? hooks_.safety : nullptr;
   }
 
   /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x102F.
   ObjectHook* find(uint16_t index) const noexcept {
+    const uint32_t offset = index - 0x1000U;
+    if (offset < sizeof(kOwners)) {
+      return hooks_.of[kOwners[offset]];
+    }
     if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
       return hooks_.pdos;
     }
     // cppcheck-suppress knownConditionTrueFalse ; false only for a call site's constant index
-    if (index - 0x1300U <= 0xFFU) {
-      return hooks_.safety;
-    }
-    const uint32_t offset = index - 0x1000U;
-    return offset < sizeof(kOwners) ? hooks_.of[kOwners[offset]] : nullptr;
+    return index - 0x1300U <= 0xFFU ? hooks_.safety : nullptr;
   }
 
  private:
