@@ -48,6 +48,7 @@ TEST(FeaturesBuild, IsTheVariantCMakeAskedFor) {
   add(features::kTime, "TIME");
   add(features::kEmcyConsumer, "EMCY_CONSUMER");
   add(features::kSdoServers, "SDO_SERVERS");
+  add(features::kSafety, "SAFETY");
   EXPECT_EQ(compiledIn, COSTA_EXPECTED_FEATURES);
 }
 
@@ -177,6 +178,38 @@ TEST_F(FeaturesTest, AdditionalSdoServersDoNotExistWithoutThem) {
                  "rx 681 [8] 40 00 10 00 00 00 00 00  # to the additional server\n" +
                  lines(features::kSdoServers, "tx 6C1 [8] 43 00 10 00 xx xx xx xx", "")),
             "");
+}
+
+TEST_F(FeaturesTest, GlobalFailSafeIsIgnoredWithoutSafety) {
+  EXPECT_EQ(play("tx 701 [1] 00\n"
+                 "rx 601 [8] 40 00 13 00 00 00 00 00  # 0x1300, GFC valid\n" +
+                 lines(features::kSafety, "tx 581 [8] 4F 00 13 00 01 00 00 00",
+                       "tx 581 [8] 80 00 13 00 00 00 02 06  # object does not exist")),
+            "");
+  const uint32_t before = ignored();
+  EXPECT_EQ(play("rx 001 [0]\n"), "");
+  EXPECT_EQ(ignored() - before, features::kSafety ? 0U : 1U);
+  EXPECT_EQ(bus_->node().sendGlobalFailSafe(), features::kSafety);
+  EXPECT_EQ(play(lines(features::kSafety, "tx 001 [0]", "")), "");
+}
+
+TEST_F(FeaturesTest, SrdosDoNotExistWithoutSafety) {
+  EXPECT_EQ(play("tx 701 [1] 00\n"
+                 "rx 601 [8] 2F FE 13 00 A5 00 00 00  # 0x13FE, configuration valid\n" +
+                 lines(features::kSafety, "tx 581 [8] 60 FE 13 00 00 00 00 00",
+                       "tx 581 [8] 80 FE 13 00 00 00 02 06  # object does not exist") +
+                 "rx 000 [2] 01 00\n" +
+                 lines(features::kSafety,
+                       "tx 101 [6] 00 00 00 00 34 12\ntx 102 [6] FF FF FF FF CB ED", "")),
+            "");
+  // Without the service nothing supervises the working state: it is always allowed.
+  EXPECT_TRUE(bus_->node().workingStateAllowed());
+  const uint32_t before = ignored();
+  EXPECT_EQ(play("rx 104 [4] EE DD CC BB  # SRDO 2's inverted frame alone\n" +
+                 lines(features::kSafety, "tx 081 [8] 00 82 11 04 02 00 00 00", "")),
+            "");
+  EXPECT_EQ(bus_->node().workingStateAllowed(), !features::kSafety);
+  EXPECT_EQ(ignored() - before, features::kSafety ? 0U : 1U);
 }
 
 TEST_F(FeaturesTest, NothingIsStoredWithoutParameterStorage) {

@@ -183,6 +183,9 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
       !restrictedCanId(time & kIdBits)) {
     ids.add(time & kIdBits);
   }
+  if (dictionary.readUnsigned(0x1300, 0, 0) == 1U) {
+    ids.add(0x001);  // GFC (CiA 304) where 0x1300 makes it valid
+  }
   if (state != NmtState::kOperational) {
     return ids;
   }
@@ -191,6 +194,17 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
       ids.add(cob.id);
     }
   });
+  // Transmit SRDOs (CiA 304): their two COB-IDs, which CiA 304 keeps in 0x101..0x180.
+  for (uint16_t index = 0x1301; index <= 0x1340; ++index) {
+    if (dictionary.readUnsigned(index, 1, 0) == 1U) {
+      for (uint8_t sub = 5; sub <= 6; ++sub) {
+        const auto id = static_cast<uint32_t>(dictionary.readUnsigned(index, sub, 0));
+        if (id >= 0x101U && id <= 0x180U) {
+          ids.add(id);
+        }
+      }
+    }
+  }
   return ids;
 }
 
@@ -231,6 +245,15 @@ std::string checkConfiguredCanIds(const Node& node) {
         return "valid SDO server COB-ID " + hex(cob) + " at " + hex(index) +
                " has a restricted or 29-bit CAN-ID";
       }
+    }
+  }
+  for (uint16_t index = 0x1301; index <= 0x1340; ++index) {
+    const uint64_t direction = dictionary.readUnsigned(index, 1, 0);
+    const uint64_t normal = dictionary.readUnsigned(index, 5, 0x101);
+    const uint64_t inverted = dictionary.readUnsigned(index, 6, 0x102);
+    if (direction != 0U && (normal < 0x101U || normal > 0x180U || (normal & 1U) == 0U ||
+                            inverted < 0x101U || inverted > 0x180U || (inverted & 1U) != 0U)) {
+      return "SRDO " + hex(index) + " has a COB-ID outside 0x101..0x180 or of the wrong parity";
     }
   }
   if (cobIds.time.valid()) {
@@ -298,6 +321,9 @@ const char* transmittedFrameFault(const CanFrame& frame, const CanIdSet& allowed
       frame.id > cob::kErrorControlBase && frame.id <= cob::kErrorControlBase + 127U;
   if ((sdo || frame.id == cob::kLssToMaster) && frame.dlc != 8U) {
     return "SDO and LSS frames have 8 bytes";
+  }
+  if (frame.id == 0x001U && frame.dlc != 0U) {
+    return "GFC has no data";
   }
   if (errorControl && frame.dlc != 1U) {
     return "boot-up, heartbeat and guarding frames have 1 byte";

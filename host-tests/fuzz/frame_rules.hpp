@@ -39,7 +39,9 @@ bool restrictedCanId(uint32_t id);
 ///    (an answer under way when the server was made not valid leaves on its CAN-ID); EMCY: the
 ///    COB-ID of 0x1014 when valid and not restricted (0x80 + n without 0x1014); SYNC: the COB-ID of
 ///    0x1005 when it produces SYNC (bit 30) and the id is not restricted; TIME likewise with
-///    0x1012;
+///    0x1012; GFC 0x001 (without data) when 0x1300 is 1 (CiA 304);
+///  * in operational: each transmit SRDO's two COB-IDs (0x1301..0x1340 sub-indices 5, 6,
+///    when sub-index 1 is 1 and they are in 0x101..0x180);
 ///  * in operational: each TPDO whose COB-ID (0x1800..0x19FF sub-index 1) is valid, 11-bit and
 ///    allowed for a TPDO (the profile's range, else not restricted).
 CanIdSet allowedTransmitIds(const Node& node, bool lss);
@@ -54,8 +56,9 @@ std::string checkTransmittedFrame(const CanFrame& frame, const CanIdSet& allowed
 /// Empty when no COB-ID in the node's dictionary gives a configurable object a restricted
 /// CAN-ID: SYNC 0x1005 (consumed or produced), EMCY 0x1014 when valid, TIME 0x1012 when
 /// consumed or produced, each valid EMCY consumer entry of 0x1028 and each valid COB-ID of an
-/// additional SDO server 0x1201..0x127F (nor a 29-bit one), each
-/// RPDO and TPDO
+/// additional SDO server 0x1201..0x127F (nor a 29-bit one), each SRDO with a direction whose
+/// COB-IDs are not in 0x101..0x180, odd for the normal data and even for the inverted
+/// (CiA 304), each RPDO and TPDO
 /// (0x1400..0x15FF, 0x1800..0x19FF sub-index 1) when valid (a device profile's own PDO range
 /// replaces the rule); else the first one that does. A node without node-id (0xFF) sends
 /// nothing and its $NODEID defaults mean nothing yet: always empty.

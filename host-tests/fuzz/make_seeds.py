@@ -166,6 +166,18 @@ def synthetic():
         + frame_event(0x681, 8, [0xA4, 0x08, 0x10, 0, 0x7F, 0, 0, 0])
         + sdo([0x23, 0x01, 0x12, 0x01, 0x81, 0x06, 0, 0x80])
         + frame_event(0x681, 8, [0x70, 0, 0, 0, 0, 0, 0, 0]) + wait_event(1500),
+        # The global fail-safe command (CiA 304), then one with data and one remote frame.
+        "gfc": bytes([0]) + frame_event(0x001, 0, []) + frame_event(0x001, 1, [0])
+        + frame_event(0x001, 0, [], rtr=True),
+        # SRDO 2 of the example (0x103/0x104) after the master validated the configuration and
+        # started the node: a good pair, then a bad inversion.
+        "srdo": bytes([0])
+        + frame_event(0x601, 8, [0x2F, 0xFE, 0x13, 0, 0xA5, 0, 0, 0])
+        + frame_event(0x000, 2, [0x01, 0x00])
+        + frame_event(0x103, 4, [0x11, 0x22, 0x33, 0x44])
+        + frame_event(0x104, 4, [0xEE, 0xDD, 0xCC, 0xBB]) + wait_event(50)
+        + frame_event(0x103, 4, [0x11, 0x22, 0x33, 0x44])
+        + frame_event(0x104, 4, [0xEE, 0xDD, 0xCC, 0xBC]) + wait_event(200),
     }
 
 

@@ -63,7 +63,8 @@ struct NodeServices {
             settings.nodeId),
         services(ServiceObjects::Hooks{&emcy, &sync, &errorControl.guardingObjects(),
                                        &stored.commands(), &errorControl.consumerObjects(),
-                                       &heartbeat, &time, &emcyConsumer, &pdos, &sdoServers}) {
+                                       &heartbeat, &time, &emcyConsumer, nullptr, &pdos,
+                                       &sdoServers}) {
     access.setObserver(stored.autoSave());
     pdos.bind();
     EXPECT_TRUE(listeners.add(listener));

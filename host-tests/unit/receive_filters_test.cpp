@@ -41,8 +41,8 @@ bool passes(const std::vector<CanIdFilter>& filters, uint32_t id) {
 
 TEST_F(ReceiveFilters, ListEveryServiceCanIdOnceInOrderThenTheErrorControlRange) {
   const std::vector<CanIdFilter> filters = filtersOf(bus_.node());
-  const std::vector<uint32_t> expected = {0x000, 0x080, 0x082, 0x083, 0x100, 0x181,
-                                          0x201, 0x281, 0x301, 0x601, 0x7E5};
+  const std::vector<uint32_t> expected = {0x000, 0x001, 0x080, 0x082, 0x083, 0x100, 0x103,
+                                          0x104, 0x181, 0x201, 0x281, 0x301, 0x601, 0x7E5};
   EXPECT_EQ(exactIds(filters), expected);
   ASSERT_EQ(filters.size(), expected.size() + 1U);
   EXPECT_EQ(filters.back().id, 0x700U);
@@ -115,11 +115,11 @@ TEST_F(ReceiveFilters, ASmallerTableGetsWhatFitsAndTheTrueCount) {
   CanIdFilter untouched;
   untouched.id = 0x123;
   filters[2] = untouched;
-  EXPECT_EQ(bus_.node().receiveFilters(filters, 2), 12U);
+  EXPECT_EQ(bus_.node().receiveFilters(filters, 2), 15U);
   EXPECT_EQ(filters[0].id, 0x000U);
-  EXPECT_EQ(filters[1].id, 0x080U);
+  EXPECT_EQ(filters[1].id, 0x001U);  // GFC
   EXPECT_EQ(filters[2].id, 0x123U);  // untouched
-  EXPECT_EQ(bus_.node().receiveFilters(nullptr, 0), 12U);
+  EXPECT_EQ(bus_.node().receiveFilters(nullptr, 0), 15U);
 }
 
 }  // namespace

@@ -62,14 +62,14 @@ TEST_F(TimeOfDayTest, TimeIsRoutedWithEveryPdoValid) {
   )");
   EXPECT_EQ(clockOfDay(bus_.node()), timeOf(10000, 300));
   // Every route found its place: the last one built (TPDO4's remote request) too.
-  // (EMCY of nodes 2 and 3 are consumed too.)
+  // (EMCY of nodes 2 and 3, GFC and SRDO 2 are consumed too.)
   CanIdFilter filters[20];
   const size_t count = bus_.node().receiveFilters(filters, 20);
-  ASSERT_EQ(count, 16U);  // 15 CAN-IDs and the error control range
-  EXPECT_EQ(filters[14].id, 0x7E5U);
-  EXPECT_EQ(filters[13].id, 0x601U);
-  EXPECT_EQ(filters[12].id, 0x501U);
-  EXPECT_EQ(filters[11].id, 0x481U);
+  ASSERT_EQ(count, 19U);  // 18 CAN-IDs and the error control range
+  EXPECT_EQ(filters[17].id, 0x7E5U);
+  EXPECT_EQ(filters[16].id, 0x601U);
+  EXPECT_EQ(filters[15].id, 0x501U);
+  EXPECT_EQ(filters[14].id, 0x481U);
 }
 
 TEST_F(TimeOfDayTest, MalformedFramesAreIgnoredAndCounted) {

@@ -41,6 +41,7 @@ def capacities(device: Device) -> list:
         ("uint8_t", "kHeartbeatConsumers", highest_sub(0x1016)),
         ("uint8_t", "kEmcyConsumers", highest_sub(0x1028)),
         ("uint8_t", "kSdoServers", sum(1 for i in indices if 0x1201 <= i <= 0x127F)),
+        ("uint8_t", "kSrdoCount", sum(1 for i in indices if 0x1301 <= i <= 0x1340)),
         ("uint8_t", "kErrorHistory", highest_sub(0x1003)),
         ("uint16_t", "kObjectCount", len(device.objects)),
     ]

@@ -23,6 +23,7 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
       sync_(dictionary_, tx_, emcy_, clock_, router_),
       time_(dictionary_, tx_, clock_, router_),
       emcyConsumer_(listeners_, router_),
+      safety_(SafetyService::Services{access_, tx_, emcy_, listeners_, router_, nmt_, clock_}),
       pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
       stored_(dictionary_, settings_, listeners_),
       bitTiming_(settings_.bitRateControl, settings_.bitTiming),
@@ -37,7 +38,8 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
            settings_.nodeId),
       services_(ServiceObjects::Hooks{&emcy_, &sync_, &errorControl_.guardingObjects(),
                                       &stored_.commands(), &errorControl_.consumerObjects(),
-                                      &heartbeat_, &time_, &emcyConsumer_, &pdos_, &sdoServers_}) {
+                                      &heartbeat_, &time_, &emcyConsumer_, &safety_, &pdos_,
+                                      &sdoServers_}) {
   access_.setObserver(stored_.autoSave());
   pdos_.bind();
 }

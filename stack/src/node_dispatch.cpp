@@ -22,6 +22,7 @@ void Node::buildRoutes() noexcept {
     router_.add(static_cast<uint16_t>(time_.canId()), Route::kTime);
   }
   EmcyConsumerChoice::addRoutes(dictionary_, router_);
+  safety_.addRoutes(router_);
   for (size_t i = 0; i < pdos_.rpdoCount(); ++i) {
     const RpdoChannel& rpdo = pdos_.rpdo(i);
     if (rpdo.valid()) {
@@ -83,6 +84,8 @@ COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame
       return true;
     }
     case Route::kTime: return preOrOperational() && time_.onFrame(frame, clock_.now);
+    case Route::kGfc: return nmt_.state() != NmtState::kInitialising && safety_.onGfc(frame);
+    case Route::kSrdo: return safety_.onSrdo(frame, entry.channel, clock_.now);
     case Route::kEmcy: return preOrOperational() && emcyConsumer_.onFrame(frame, entry.channel);
     case Route::kSdo: {
       return preOrOperational() && sdo_.onRequest(frame, clock_.now);
@@ -173,6 +176,7 @@ Microseconds Node::runDue() noexcept {
       handleSync(sync);
     }
     time_.process(at, preOrOperational());
+    safety_.process(at);
     pdos_.process(at);
     emcy_.process(at, nmt_.state(), tx_);
   }
@@ -182,6 +186,7 @@ Microseconds Node::runDue() noexcept {
   next = earliest(next, errorControl_.nextDeadline());
   next = earliest(next, sync_.nextDeadline());
   next = earliest(next, time_.nextDeadline());
+  next = earliest(next, safety_.nextDeadline());
   next = earliest(next, pdos_.nextDeadline());
   next = earliest(next, emcy_.nextDeadline(nmt_.state()));
   next = earliest(next, lss_.nextDeadline());

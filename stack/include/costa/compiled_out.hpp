@@ -16,6 +16,7 @@
 #include "costa/node_guarding.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/parameter_store.hpp"
+#include "costa/safety_service.hpp"
 #include "costa/store_commands.hpp"
 #include "costa/time_service.hpp"
 
@@ -303,6 +304,34 @@ class AbsentEmcyConsumer final : public AbsentObjects {
   }
   uint32_t framesIgnored() const noexcept { return 0; }
 };
+
+/// Safety compiled out: no GFC, no SRDO, 0x1300..0x13FF do not exist; nothing supervises the
+/// working state, which is always allowed.
+class AbsentSafetyService final : public AbsentObjects {
+ public:
+  explicit AbsentSafetyService(const SafetyService::Services& services) noexcept { (void)services; }
+  void addRoutes(FrameRouter& router) const noexcept { (void)router; }
+  bool onGfc(const CanFrame& frame) noexcept {
+    (void)frame;
+    return false;
+  }
+  bool sendGfc(bool allowed) noexcept {
+    (void)allowed;
+    return false;
+  }
+  bool onSrdo(const CanFrame& frame, uint8_t channel, Microseconds now) noexcept {
+    (void)frame;
+    (void)channel;
+    (void)now;
+    return false;
+  }
+  void process(Microseconds now) noexcept { (void)now; }
+  Microseconds nextDeadline() const noexcept { return kNever; }
+  bool workingStateAllowed() const noexcept { return true; }
+};
+
+/// The node's safety service (GFC, SRDOs): the service, or its stand-in.
+using SafetyServiceChoice = ServiceIf<features::kSafety, SafetyService, AbsentSafetyService>;
 
 /// The node's EMCY consumer: the service, or its stand-in.
 using EmcyConsumerChoice = ServiceIf<features::kEmcyConsumer, EmcyConsumer, AbsentEmcyConsumer>;

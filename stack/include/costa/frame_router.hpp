@@ -22,6 +22,8 @@ enum class Route : uint8_t {
   kNmt,          ///< NMT command (0x000)
   kSync,         ///< SYNC (consumer)
   kTime,         ///< TIME (consumer)
+  kGfc,          ///< global fail-safe command (0x001, CiA 304)
+  kSrdo,         ///< a receive SRDO's frame; `channel` is 2 x its slot, + 1 for the inverted
   kEmcy,         ///< another node's EMCY (consumer); `channel` is its sub-index of 0x1028
   kSdo,          ///< SDO request to the node's server
   kSdoServer,    ///< SDO request to an additional server; `channel` is its SdoServers index

@@ -203,6 +203,15 @@ class Node {
     time_.setProducerPeriod(period, clock_.now);
   }
 
+  // --- Safety, CiA 304 (features::kSafety) --------------------------------------------------
+  /// Sends the global fail-safe command (0x001) when 0x1300 enables it and the node is
+  /// pre-operational or operational; false otherwise.
+  bool sendGlobalFailSafe() noexcept { return safety_.sendGfc(preOrOperational()); }
+  /// The port hook of the safety service: true while the application may be in its working
+  /// state (operational, SRDO configuration valid, no failure since operational was entered);
+  /// poll it. Without features::kSafety always true.
+  bool workingStateAllowed() const noexcept { return safety_.workingStateAllowed(); }
+
   // --- Views ----------------------------------------------------------------------------------
   od::ObjectDictionary& dictionary() noexcept { return dictionary_; }
   const od::ObjectDictionary& dictionary() const noexcept { return dictionary_; }
@@ -261,6 +270,7 @@ class Node {
   SyncService sync_;
   TimeServiceChoice time_;
   EmcyConsumerChoice emcyConsumer_;
+  SafetyServiceChoice safety_;
   PdoEngine pdos_;
   StoredParameters stored_;
   BitTimingSwitch bitTiming_;

@@ -8,6 +8,7 @@
 #include "costa/lss_slave.hpp"
 #include "costa/nmt_state.hpp"
 #include "costa/parameter_store.hpp"
+#include "costa/srdo_failure.hpp"
 
 namespace costa {
 
@@ -43,6 +44,14 @@ class NodeEvents {
   virtual void onSync(uint8_t counter) noexcept { (void)counter; }
   /// An emergency message on a CAN-ID the EMCY consumer (0x1028) watches.
   virtual void onEmcyReceived(const EmcyMessage& emcy) noexcept { (void)emcy; }
+  /// A global fail-safe command (GFC, CiA 304) was received: enter the safe state.
+  virtual void onGlobalFailSafe() noexcept {}
+  /// The safety service (CiA 304) entered the node's safe state: `failure` of SRDO `srdo`
+  /// (1..64; 0 for a GFC). Once per stay in operational; Node::workingStateAllowed() is false.
+  virtual void onSafeState(uint8_t srdo, SrdoFailure failure) noexcept {
+    (void)srdo;
+    (void)failure;
+  }
   /// A monitored heartbeat (0x1016) stopped arriving / arrived again after a timeout.
   virtual void onHeartbeatTimeout(uint8_t nodeId) noexcept { (void)nodeId; }
   virtual void onHeartbeatResumed(uint8_t nodeId) noexcept { (void)nodeId; }

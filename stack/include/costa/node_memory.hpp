@@ -11,6 +11,7 @@
 #include "costa/heartbeat_consumer.hpp"
 #include "costa/hook_registry.hpp"
 #include "costa/rpdo_channel.hpp"
+#include "costa/safety_service.hpp"
 #include "costa/sdo_servers.hpp"
 #include "costa/tpdo_channel.hpp"
 #include "costa/tx_queue.hpp"
@@ -93,10 +94,16 @@ struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServ
       features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
   static constexpr size_t kEmcyConsumers =
       features::kEmcyConsumer ? DictionaryCapacity::kEmcyConsumers : 0U;
+  /// Two per SRDO the safety service runs (its normal and inverted CAN-IDs), and GFC.
+  static constexpr size_t kSafetyRoutes =
+      features::kSafety ? 1U + 2U * (DictionaryCapacity::kSrdoCount < SafetyService::kSrdoCapacity
+                                         ? DictionaryCapacity::kSrdoCount
+                                         : SafetyService::kSrdoCapacity)
+                        : 0U;
   /// NMT, SYNC, SDO, LSS, TIME (when compiled in), one per PDO, per consumed EMCY CAN-ID and
-  /// per additional SDO server.
-  static constexpr size_t kRoutes =
-      4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos + kEmcyConsumers + kSdoServers;
+  /// per additional SDO server, and the safety service's.
+  static constexpr size_t kRoutes = 4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos +
+                                    kEmcyConsumers + kSdoServers + kSafetyRoutes;
 
   Values values{};
   QueuedFrame tx[Extra::kTxQueueDepth]{};

@@ -1,6 +1,7 @@
 // Which of the node's services owns an object of the communication area: the hook the stack
 // itself puts behind 0x1003, 0x1005..0x1007, 0x100C, 0x100D, 0x1010, 0x1011, 0x1012, 0x1014,
-// 0x1016, 0x1017, 0x1019, 0x1028, 0x1201..0x127F and 0x1400..0x1BFF. A switch, not a table: no RAM
+// 0x1016, 0x1017, 0x1019, 0x1028, 0x1201..0x127F, 0x1300..0x13FF and 0x1400..0x1BFF. A switch,
+// not a table: no RAM
 // per object, O(1). Application hooks (HookRegistry) take precedence over these.
 #pragma once
 
@@ -23,6 +24,7 @@ class ServiceObjects {
     ObjectHook* heartbeat;     ///< 0x1017
     ObjectHook* time;          ///< 0x1012
     ObjectHook* emcyConsumer;  ///< 0x1028
+    ObjectHook* safety;        ///< 0x1300..0x13FF
     ObjectHook* pdos;          ///< 0x1400..0x1BFF
     ObjectHook* sdoServers;    ///< 0x1201..0x127F
   };
@@ -31,7 +33,8 @@ class ServiceObjects {
       : hooks_{{nullptr, hooks.emcy, hooks.sync, hooks.guarding, hooks.store, hooks.consumer,
                 hooks.heartbeat, hooks.time, hooks.emcyConsumer},
                hooks.pdos,
-               hooks.sdoServers} {}
+               hooks.sdoServers,
+               hooks.safety} {}
 
   /// The hook of the service that owns `index` when that service refines reads (prepareRead:
   /// the store commands' 0x1010/0x1011, which read 1 or 0 by whether storage is there, and the
@@ -44,25 +47,29 @@ class ServiceObjects {
       }
     }
     const uint32_t offset = index - 0x1000U;
-    if (offset >= sizeof(kOwners)) {
-      return nullptr;
+    if (offset < sizeof(kOwners)) {
+      const uint8_t owner = kOwners[offset];
+      return (kReaders & (1U << owner)) != 0U ? hooks_.of[owner] : nullptr;
     }
-    const uint8_t owner = kOwners[offset];
-    return (kReaders & (1U << owner)) != 0U ? hooks_.of[owner] : nullptr;
+    return !features::kSafety && index - 0x1300U <= 0xFFU ? hooks_.safety : nullptr;
   }
 
   /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x102F;
   /// range tests for the PDOs and the additional SDO servers.
   ObjectHook* find(uint16_t index) const noexcept {
-    if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
-      return hooks_.pdos;
-    }
     const uint32_t offset = index - 0x1000U;
     if (offset < sizeof(kOwners)) {
       return hooks_.of[kOwners[offset]];
     }
+    if (index - 0x1400U <= 0x1BFFU - 0x1400U) {
+      return hooks_.pdos;
+    }
     // cppcheck-suppress knownConditionTrueFalse ; true for 0x1201..0x127F
-    return index - 0x1201U <= 0x127FU - 0x1201U ? hooks_.sdoServers : nullptr;
+    if (index - 0x1201U <= 0x127FU - 0x1201U) {
+      return hooks_.sdoServers;
+    }
+    // cppcheck-suppress knownConditionTrueFalse ; false only for a call site's constant index
+    return index - 0x1300U <= 0xFFU ? hooks_.safety : nullptr;
   }
 
  private:
@@ -86,6 +93,7 @@ class ServiceObjects {
                         ///< EMCY consumer
     ObjectHook* pdos;
     ObjectHook* sdoServers;
+    ObjectHook* safety;
   };
   Table hooks_;
 };

@@ -1,0 +1,265 @@
+// SRDOs (EN 50325-5 / CiA 304) through wire frames. The example transmits SRDO 1 (0x1301:
+// normal 0x101, inverted 0x102, SCT 100 ms, SRVT 20 ms; 0x2001 uptime and 0x2005:01, 6 bytes)
+// and receives SRDO 2 (0x1302: 0x103 / 0x104, SCT 100 ms, SRVT 20 ms; 0x2005:02 and 0x2005:03,
+// 4 bytes); 0x13FF holds both signatures, 0x13FE is 0 until the master validates it (0xA5).
+// EMCY of a failure: code, error register 0x11, manufacturer bytes failure and SRDO number.
+#include <vector>
+
+#include "example_fixture.hpp"
+
+namespace costa::test {
+namespace {
+
+class SafeStateLog : public NodeEvents {
+ public:
+  void onSafeState(uint8_t srdo, SrdoFailure failure) noexcept override {
+    if (count < kCapacity) {
+      srdos[count] = srdo;
+      failures[count] = failure;
+      ++count;
+    }
+  }
+  static constexpr size_t kCapacity = 4;
+  uint8_t srdos[kCapacity] = {};
+  SrdoFailure failures[kCapacity] = {};
+  size_t count = 0;
+};
+
+constexpr const char* kValidate = R"(
+  rx 601 [8] 2F FE 13 00 A5 00 00 00   # configuration valid
+  tx 581 [8] 60 FE 13 00 00 00 00 00
+)";
+constexpr const char* kStart = R"(
+  rx 000 [2] 01 00
+  tx 101 [6] 00 00 00 00 34 12         # SRDO 1 at once: uptime 0, 0x2005:01 = 0x1234
+  tx 102 [6] FF FF FF FF CB ED         # and its bit-inverted copy
+)";
+
+class SrdoTest : public ExampleNodeTest {
+ protected:
+  void SetUp() override {
+    ExampleNodeTest::SetUp();
+    ASSERT_TRUE(bus_.node().addListener(log_));
+  }
+  /// Validates the configuration and starts the node: SRDO 1 sends its first pair.
+  void startSafety() {
+    EXPECT_TRANSCRIPT(kValidate);
+    EXPECT_TRANSCRIPT(kStart);
+    EXPECT_TRUE(bus_.node().workingStateAllowed());
+  }
+  void expectSafeState(uint8_t srdo, SrdoFailure failure) {
+    ASSERT_EQ(log_.count, 1U);
+    EXPECT_EQ(log_.srdos[0], srdo);
+    EXPECT_EQ(log_.failures[0], failure);
+    EXPECT_FALSE(bus_.node().workingStateAllowed());
+  }
+
+  SafeStateLog log_;
+};
+
+TEST_F(SrdoTest, NotValidatedNoSrdoRunsAndTheWorkingStateIsNotAllowed) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 000 [2] 01 00
+    wait 300
+  )");
+  EXPECT_FALSE(bus_.node().workingStateAllowed());
+  EXPECT_EQ(log_.count, 0U);
+}
+
+TEST_F(SrdoTest, ATransmitSrdoSendsItsNormalThenItsInvertedFrameEverySct) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [4] 11 22 33 44
+    rx 104 [4] EE DD CC BB
+    wait 99
+    rx 103 [4] 11 22 33 44
+    rx 104 [4] EE DD CC BB
+    wait 1
+    tx 101 [6] 00 00 00 00 34 12
+    tx 102 [6] FF FF FF FF CB ED
+  )");
+  EXPECT_TRUE(bus_.node().workingStateAllowed());
+}
+
+TEST_F(SrdoTest, AValidPairIsWrittenToTheMappedEntries) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [4] 11 22 33 44
+    wait 5
+    rx 104 [4] EE DD CC BB             # 5 ms later: within SRVT
+    rx 601 [8] 40 05 20 02 00 00 00 00
+    tx 581 [8] 4B 05 20 02 11 22 00 00
+    rx 601 [8] 40 05 20 03 00 00 00 00
+    tx 581 [8] 4B 05 20 03 33 44 00 00
+  )");
+  EXPECT_TRUE(bus_.node().workingStateAllowed());
+  EXPECT_EQ(log_.count, 0U);
+}
+
+TEST_F(SrdoTest, AMissingInvertedFrameEntersTheSafeStateAtSrvt) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [4] 11 22 33 44
+    wait 19
+    wait 1
+    tx 081 [8] 50 82 11 02 02 00 00 00  # SRVT passed: SRDO 2, failure 2
+  )");
+  expectSafeState(2, SrdoFailure::kValidationTime);
+  EXPECT_EQ(value(0x2005, 2), 0x1234U);  // not written
+  EXPECT_TRANSCRIPT("wait 200");         // SRDO 1 stopped too; one report
+}
+
+TEST_F(SrdoTest, ALateFrameEntersTheSafeStateAtSct) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [4] 11 22 33 44
+    rx 104 [4] EE DD CC BB
+    wait 99
+    wait 1
+    tx 101 [6] 00 00 00 00 34 12
+    tx 102 [6] FF FF FF FF CB ED
+    tx 081 [8] 50 82 11 01 02 00 00 00  # no new pair within SCT: failure 1
+    rx 103 [4] 11 22 33 44             # too late
+  )");
+  expectSafeState(2, SrdoFailure::kCycleTime);
+}
+
+TEST_F(SrdoTest, AWrongInversionEntersTheSafeState) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [4] 11 22 33 44
+    rx 104 [4] EE DD CC BC             # last byte not inverted
+    tx 081 [8] 00 82 11 03 02 00 00 00
+  )");
+  expectSafeState(2, SrdoFailure::kNotInverted);
+  EXPECT_EQ(value(0x2005, 2), 0x1234U);
+}
+
+TEST_F(SrdoTest, AnInvertedFrameWithoutItsNormalFrameEntersTheSafeState) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 104 [4] EE DD CC BB
+    tx 081 [8] 00 82 11 04 02 00 00 00
+  )");
+  expectSafeState(2, SrdoFailure::kSequence);
+}
+
+TEST_F(SrdoTest, TwoNormalFramesInARowEnterTheSafeState) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [4] 11 22 33 44
+    rx 103 [4] 11 22 33 44             # the inverted frame is missing
+    tx 081 [8] 00 82 11 04 02 00 00 00
+  )");
+  expectSafeState(2, SrdoFailure::kSequence);
+}
+
+TEST_F(SrdoTest, AFrameOfTheWrongLengthEntersTheSafeState) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [3] 11 22 33
+    tx 081 [8] 10 82 11 05 02 00 00 00
+  )");
+  expectSafeState(2, SrdoFailure::kLength);
+}
+
+TEST_F(SrdoTest, AWrongSignatureEntersTheSafeStateOnEnteringOperational) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B FF 13 02 4C 31 00 00   # SRDO 2's signature off by one
+    tx 581 [8] 60 FF 13 02 00 00 00 00
+  )");
+  EXPECT_TRANSCRIPT(kValidate);
+  EXPECT_TRANSCRIPT(R"(
+    rx 000 [2] 01 00
+    tx 081 [8] 00 63 11 06 02 00 00 00   # no SRDO is sent
+    wait 200
+  )");
+  expectSafeState(2, SrdoFailure::kSignature);
+}
+
+TEST_F(SrdoTest, AConfigurationChangedWhileOperationalEntersTheSafeState) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 01 13 02 32 00 00 00   # SCT: refused while operational
+    tx 581 [8] 80 01 13 02 22 00 00 08
+    rx 103 [4] 11 22 33 44
+    rx 104 [4] EE DD CC BB
+  )");
+  EXPECT_TRUE(bus_.node().dictionary().storeUnsigned(0x1301, 2, 50));  // behind the SDO's back
+  EXPECT_TRANSCRIPT(R"(
+    wait 100
+    tx 081 [8] 00 63 11 07 01 00 00 00
+  )");
+  expectSafeState(1, SrdoFailure::kConfigurationChanged);
+}
+
+TEST_F(SrdoTest, LeavingOperationalEndsTheSafeStateAndEnteringItStartsAgain) {
+  startSafety();
+  EXPECT_TRANSCRIPT(R"(
+    rx 104 [4] EE DD CC BB
+    tx 081 [8] 00 82 11 04 02 00 00 00
+    rx 000 [2] 80 00
+  )");
+  EXPECT_FALSE(bus_.node().workingStateAllowed());
+  EXPECT_TRANSCRIPT(kStart);
+  EXPECT_TRUE(bus_.node().workingStateAllowed());
+}
+
+TEST_F(SrdoTest, AGfcInOperationalEntersTheSafeState) {
+  startSafety();
+  EXPECT_TRANSCRIPT("rx 001 [0]");
+  expectSafeState(0, SrdoFailure::kGlobalFailSafe);
+  EXPECT_TRANSCRIPT("wait 200");  // no SRDO any more, no EMCY
+}
+
+TEST_F(SrdoTest, WritesFollowTheRulesAndInvalidateTheConfiguration) {
+  EXPECT_TRANSCRIPT(kValidate);
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 01 13 01 03 00 00 00   # direction 3
+    tx 581 [8] 80 01 13 01 30 00 09 06
+    rx 601 [8] 2B 01 13 02 00 00 00 00   # SCT 0
+    tx 581 [8] 80 01 13 02 30 00 09 06
+    rx 601 [8] 2F 01 13 03 00 00 00 00   # SRVT 0
+    tx 581 [8] 80 01 13 03 30 00 09 06
+    rx 601 [8] 27 01 13 02 C8 00 00 00   # SCT in 3 bytes
+    tx 581 [8] 80 01 13 02 12 00 07 06
+    rx 601 [8] 2F 01 13 04 FD 00 00 00   # transmission type 253
+    tx 581 [8] 80 01 13 04 30 00 09 06
+    rx 601 [8] 23 01 13 05 02 01 00 00   # normal data on an even COB-ID
+    tx 581 [8] 80 01 13 05 30 00 09 06
+    rx 601 [8] 23 01 13 06 81 01 00 00   # beyond 0x180
+    tx 581 [8] 80 01 13 06 30 00 09 06
+    rx 601 [8] 2F 81 13 00 00 00 00 00   # mapping of a valid SRDO
+    tx 581 [8] 80 81 13 00 00 00 01 06
+    rx 601 [8] 40 FE 13 00 00 00 00 00   # refused writes changed nothing
+    tx 581 [8] 4F FE 13 00 A5 00 00 00
+    rx 601 [8] 2B 01 13 02 C8 00 00 00   # SCT 200 ms
+    tx 581 [8] 60 01 13 02 00 00 00 00
+    rx 601 [8] 40 FE 13 00 00 00 00 00   # not valid any more
+    tx 581 [8] 4F FE 13 00 00 00 00 00
+  )");
+}
+
+TEST_F(SrdoTest, AMappingIsPairsOfTheSameEntry) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 02 13 01 00 00 00 00   # SRDO 2 not valid
+    tx 581 [8] 60 02 13 01 00 00 00 00
+    rx 601 [8] 2F 82 13 00 00 00 00 00
+    tx 581 [8] 60 82 13 00 00 00 00 00
+    rx 601 [8] 23 82 13 02 10 04 05 20   # inverted: 0x2005:04, normal 0x2005:02
+    tx 581 [8] 60 82 13 02 00 00 00 00
+    rx 601 [8] 2F 82 13 00 02 00 00 00
+    tx 581 [8] 80 82 13 00 43 00 04 06
+    rx 601 [8] 2F 82 13 00 03 00 00 00   # odd count
+    tx 581 [8] 80 82 13 00 42 00 04 06
+    rx 601 [8] 23 82 13 02 10 02 05 20
+    tx 581 [8] 60 82 13 02 00 00 00 00
+    rx 601 [8] 2F 82 13 00 02 00 00 00
+    tx 581 [8] 60 82 13 00 00 00 00 00
+    rx 601 [8] 23 82 13 01 10 02 05 20   # entries only while the count is 0
+    tx 581 [8] 80 82 13 01 22 00 00 08
+  )");
+}
+
+}  // namespace
+}  // namespace costa::test

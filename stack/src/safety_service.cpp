@@ -1,0 +1,275 @@
+#include "costa/safety_service.hpp"
+
+#include "costa/emcy_producer.hpp"
+#include "costa/nmt_state_machine.hpp"
+#include "costa/node_events.hpp"
+#include "costa/object_access.hpp"
+
+namespace costa {
+namespace {
+
+constexpr uint8_t kCommunicationErrorBit = 0x10;
+
+/// EMCY error code of a failure (docs/manual-errata.md, "Safety").
+uint16_t emcyCode(SrdoFailure failure) noexcept {
+  switch (failure) {
+    case SrdoFailure::kCycleTime:
+    case SrdoFailure::kValidationTime: return 0x8250;
+    case SrdoFailure::kLength: return 0x8210;
+    case SrdoFailure::kNotInverted:
+    case SrdoFailure::kSequence: return 0x8200;
+    default: return 0x6300;
+  }
+}
+
+bool srdoObject(uint16_t index) noexcept {
+  return index >= srdo::kFirstCommunication && index <= srdo::kSignatures;
+}
+
+}  // namespace
+
+bool SafetyService::gfcValid() const noexcept {
+  return s_.access.dictionary().readUnsigned(kGfcIndex, 0, 0) == 1U;
+}
+
+bool SafetyService::operational() const noexcept {
+  return s_.nmt.state() == NmtState::kOperational;
+}
+
+bool SafetyService::workingStateAllowed() const noexcept {
+  return operational() && running_ && !safe_;
+}
+
+void SafetyService::addRoutes(FrameRouter& router) const noexcept {
+  if (gfcValid()) {
+    (void)router.add(kGfcCanId, Route::kGfc);
+  }
+  const od::ObjectDictionary& dictionary = s_.access.dictionary();
+  for (uint8_t slot = 0; slot < kSrdoCapacity; ++slot) {
+    const auto index = static_cast<uint16_t>(srdo::kFirstCommunication + slot);
+    if (dictionary.readUnsigned(index, 1, 0) != srdo::kReceive) {
+      continue;
+    }
+    const auto normal = static_cast<uint32_t>(dictionary.readUnsigned(index, 5, 0));
+    const auto inverted = static_cast<uint32_t>(dictionary.readUnsigned(index, 6, 0));
+    if (normal <= FrameRouter::kLargestId && inverted <= FrameRouter::kLargestId) {
+      (void)router.add(static_cast<uint16_t>(normal), Route::kSrdo,
+                       static_cast<uint8_t>(2U * slot));
+      (void)router.add(static_cast<uint16_t>(inverted), Route::kSrdo,
+                       static_cast<uint8_t>(2U * slot + 1U));
+    }
+  }
+}
+
+bool SafetyService::onGfc(const CanFrame& frame) noexcept {
+  if (frame.rtr || frame.dlc != 0U) {
+    return false;
+  }
+  s_.listeners.notify([](NodeEvents& listener) { listener.onGlobalFailSafe(); });
+  if (operational() && started_ && !safe_) {
+    stop();
+    safe_ = true;
+    s_.listeners.notify(
+        [](NodeEvents& listener) { listener.onSafeState(0, SrdoFailure::kGlobalFailSafe); });
+  }
+  return true;
+}
+
+bool SafetyService::sendGfc(bool allowed) noexcept {
+  if (!allowed || !gfcValid()) {
+    return false;
+  }
+  CanFrame frame;
+  frame.id = kGfcCanId;
+  frame.dlc = 0;
+  s_.tx.send(frame);
+  return true;
+}
+
+void SafetyService::start(Microseconds now) noexcept {
+  started_ = true;
+  safe_ = false;
+  active_ = 0;
+  const od::ObjectDictionary& dictionary = s_.access.dictionary();
+  const bool anySrdo = dictionary.findObject(srdo::kConfigurationValid) != nullptr;
+  if (anySrdo && dictionary.readUnsigned(srdo::kConfigurationValid, 0, 0) != srdo::kValid) {
+    return;  // not configured: no SRDO runs, the working state is not allowed
+  }
+  for (uint8_t number = 1; number <= 64U; ++number) {
+    const auto index = static_cast<uint16_t>(srdo::kFirstCommunication + number - 1U);
+    if (dictionary.findObject(index) == nullptr) {
+      continue;
+    }
+    SrdoConfiguration configuration;
+    const SrdoCheck check = readSrdoConfiguration(dictionary, number, &configuration);
+    if (check == SrdoCheck::kNotValid) {
+      continue;
+    }
+    if (check != SrdoCheck::kValid || number > kSrdoCapacity) {
+      fail(SrdoFailure::kSignature, number);
+      return;
+    }
+    channels_[number - 1U].start(configuration, now);
+    active_ = number;
+  }
+  running_ = true;
+}
+
+void SafetyService::stop() noexcept {
+  running_ = false;
+  for (SrdoChannel& channel : channels_) {
+    channel.stop();
+  }
+}
+
+void SafetyService::fail(SrdoFailure failure, uint8_t number) noexcept {
+  if (safe_) {
+    return;
+  }
+  stop();
+  safe_ = true;
+  const uint8_t manufacturer[5] = {static_cast<uint8_t>(failure), number, 0, 0, 0};
+  s_.emcy.signal(emcyCode(failure), kCommunicationErrorBit, manufacturer);
+  s_.listeners.notify(
+      [failure, number](NodeEvents& listener) { listener.onSafeState(number, failure); });
+}
+
+bool SafetyService::unchanged(const SrdoChannel& channel) const noexcept {
+  const od::ObjectDictionary& dictionary = s_.access.dictionary();
+  SrdoConfiguration now;
+  return dictionary.readUnsigned(srdo::kConfigurationValid, 0, 0) == srdo::kValid &&
+         readSrdoConfiguration(dictionary, channel.configuration().number, &now) ==
+             SrdoCheck::kValid &&
+         now.signature == channel.configuration().signature;
+}
+
+void SafetyService::transmit(const SrdoChannel& channel) noexcept {
+  const SrdoConfiguration& c = channel.configuration();
+  const od::ObjectDictionary& dictionary = s_.access.dictionary();
+  const auto mapping = static_cast<uint16_t>(srdo::kFirstMapping + c.number - 1U);
+  CanFrame normal;
+  normal.id = c.normalId;
+  normal.dlc = c.length;
+  size_t offset = 0;
+  for (uint8_t sub = 1; sub < c.mappedCount; sub = static_cast<uint8_t>(sub + 2U)) {
+    const auto entry = static_cast<uint32_t>(dictionary.readUnsigned(mapping, sub, 0));
+    const od::EntryRef ref =
+        dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U));
+    if (ref.valid() && offset + ref.size() <= sizeof(normal.data)) {
+      offset += dictionary.read(ref, 0, normal.data + offset, ref.size());
+    }
+  }
+  CanFrame inverted = normal;
+  inverted.id = c.invertedId;
+  for (uint8_t i = 0; i < c.length; ++i) {
+    inverted.data[i] = static_cast<uint8_t>(~normal.data[i]);
+  }
+  s_.tx.send(normal);
+  s_.tx.send(inverted);
+}
+
+void SafetyService::deliver(const SrdoChannel& channel) noexcept {
+  const SrdoConfiguration& c = channel.configuration();
+  od::ObjectDictionary& dictionary = s_.access.dictionary();
+  const auto mapping = static_cast<uint16_t>(srdo::kFirstMapping + c.number - 1U);
+  size_t offset = 0;
+  for (uint8_t sub = 1; sub < c.mappedCount; sub = static_cast<uint8_t>(sub + 2U)) {
+    const auto entry = static_cast<uint32_t>(dictionary.readUnsigned(mapping, sub, 0));
+    const od::EntryRef ref =
+        dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U));
+    if (ref.valid() && offset + ref.size() <= c.length) {
+      (void)s_.access.write(ref, channel.data() + offset, ref.size());
+      offset += ref.size();
+    }
+  }
+}
+
+bool SafetyService::onSrdo(const CanFrame& frame, uint8_t channel, Microseconds now) noexcept {
+  if (!operational()) {
+    return false;
+  }
+  if (!started_) {
+    start(now);
+  }
+  SrdoChannel& srdo = channels_[(channel / 2U) % kSrdoCapacity];
+  if (!srdo.running()) {
+    return false;
+  }
+  bool complete = false;
+  const SrdoFailure failure = srdo.onFrame(frame, (channel & 1U) != 0U, now, &complete);
+  s_.clock.schedule(srdo.nextDeadline());
+  if (failure != SrdoFailure::kNone) {
+    fail(failure, srdo.configuration().number);
+  } else if (complete) {
+    if (unchanged(srdo)) {
+      deliver(srdo);
+    } else {
+      fail(SrdoFailure::kConfigurationChanged, srdo.configuration().number);
+    }
+  }
+  return true;
+}
+
+void SafetyService::process(Microseconds now) noexcept {
+  if (!operational()) {
+    if (started_) {
+      started_ = false;
+      safe_ = false;
+      stop();
+    }
+    return;
+  }
+  if (!started_) {
+    start(now);
+  }
+  for (uint8_t slot = 0; running_ && slot < active_; ++slot) {
+    SrdoChannel& channel = channels_[slot];
+    const SrdoFailure late = channel.checkDeadlines(now);
+    if (late != SrdoFailure::kNone) {
+      fail(late, channel.configuration().number);
+    } else if (channel.transmitDue(now)) {
+      if (unchanged(channel)) {
+        transmit(channel);
+      } else {
+        fail(SrdoFailure::kConfigurationChanged, channel.configuration().number);
+      }
+    }
+  }
+}
+
+Microseconds SafetyService::nextDeadline() const noexcept {
+  Microseconds next = kNever;
+  for (uint8_t slot = 0; running_ && slot < active_; ++slot) {
+    next = earliest(next, channels_[slot].nextDeadline());
+  }
+  return next;
+}
+
+AbortCode SafetyService::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                               const uint8_t* data, size_t length) noexcept {
+  const uint16_t index = ref.index();
+  if (index == kGfcIndex) {
+    if (length == 1U && data[0] > 1U) {
+      return AbortCode::kInvalidValue;
+    }
+  } else if (srdoObject(index)) {
+    if (operational()) {
+      return AbortCode::kCannotStoreState;  // CiA 304: no configuration while operational
+    }
+    const AbortCode refused = checkSrdoWrite(dictionary, ref, data, length);
+    if (refused != AbortCode::kNone) {
+      return refused;
+    }
+  }
+  const AbortCode written = dictionary.write(ref, data, length);
+  if (written != AbortCode::kNone) {
+    return written;
+  }
+  if (srdoObject(index) && index != srdo::kConfigurationValid) {
+    (void)dictionary.storeUnsigned(srdo::kConfigurationValid, 0, srdo::kNotValid);
+  }
+  s_.routes.invalidate();
+  return AbortCode::kNone;
+}
+
+}  // namespace costa
