@@ -45,7 +45,7 @@ void SafetyService::addRoutes(FrameRouter& router) const noexcept {
     (void)router.add(kGfcCanId, Route::kGfc);
   }
   const od::ObjectDictionary& dictionary = s_.access.dictionary();
-  for (uint8_t slot = 0; slot < kSrdoCapacity; ++slot) {
+  for (uint8_t slot = 0; slot < s_.channelCount; ++slot) {
     const auto index = static_cast<uint16_t>(srdo::kFirstCommunication + slot);
     if (dictionary.readUnsigned(index, 1, 0) != srdo::kReceive) {
       continue;
@@ -105,11 +105,11 @@ void SafetyService::start(Microseconds now) noexcept {
     if (check == SrdoCheck::kNotValid) {
       continue;
     }
-    if (check != SrdoCheck::kValid || number > kSrdoCapacity) {
+    if (check != SrdoCheck::kValid || number > s_.channelCount) {
       fail(SrdoFailure::kSignature, number);
       return;
     }
-    channels_[number - 1U].start(configuration, now);
+    s_.channels[number - 1U].start(configuration, now);
     active_ = number;
   }
   running_ = true;
@@ -117,8 +117,8 @@ void SafetyService::start(Microseconds now) noexcept {
 
 void SafetyService::stop() noexcept {
   running_ = false;
-  for (SrdoChannel& channel : channels_) {
-    channel.stop();
+  for (uint8_t slot = 0; slot < s_.channelCount; ++slot) {
+    s_.channels[slot].stop();
   }
 }
 
@@ -191,7 +191,11 @@ bool SafetyService::onSrdo(const CanFrame& frame, uint8_t channel, Microseconds 
   if (!started_) {
     start(now);
   }
-  SrdoChannel& srdo = channels_[(channel / 2U) % kSrdoCapacity];
+  const auto slot = static_cast<uint8_t>(channel / 2U);
+  if (slot >= s_.channelCount) {
+    return false;
+  }
+  SrdoChannel& srdo = s_.channels[slot];
   if (!srdo.running()) {
     return false;
   }
@@ -223,7 +227,7 @@ void SafetyService::process(Microseconds now) noexcept {
     start(now);
   }
   for (uint8_t slot = 0; running_ && slot < active_; ++slot) {
-    SrdoChannel& channel = channels_[slot];
+    SrdoChannel& channel = s_.channels[slot];
     const SrdoFailure late = channel.checkDeadlines(now);
     if (late != SrdoFailure::kNone) {
       fail(late, channel.configuration().number);
@@ -240,7 +244,7 @@ void SafetyService::process(Microseconds now) noexcept {
 Microseconds SafetyService::nextDeadline() const noexcept {
   Microseconds next = kNever;
   for (uint8_t slot = 0; running_ && slot < active_; ++slot) {
-    next = earliest(next, channels_[slot].nextDeadline());
+    next = earliest(next, s_.channels[slot].nextDeadline());
   }
   return next;
 }

@@ -42,6 +42,8 @@ struct NodeMemory {
   SdoServerSlot* sdoServerSlots;  ///< One per additional SDO server (0x1201..0x127F).
   uint8_t* sdoServerBuffers;      ///< sdoBufferSize bytes per additional SDO server.
   size_t sdoServerCount;
+  SrdoChannel* srdoChannels;  ///< One per SRDO (0x1301..0x1340) of the dictionary (safety).
+  size_t srdoCount;
 };
 
 /// Compile-time capacities of a NodeInstance beyond what the dictionary dictates.
@@ -72,6 +74,17 @@ struct SdoServerStorage<0, kBytes> {
   static uint8_t* buffers() noexcept { return nullptr; }
 };
 
+/// The SRDOs' channels; a base class, so that none takes no room.
+template <size_t kCount>
+struct SrdoStorage {
+  SrdoChannel srdoChannels[kCount]{};
+  SrdoChannel* channels() noexcept { return srdoChannels; }
+};
+template <>
+struct SrdoStorage<0> {
+  static SrdoChannel* channels() noexcept { return nullptr; }
+};
+
 template <typename DictionaryCapacity, typename Extra>
 struct SdoSizes {
   static constexpr size_t kBytes = DictionaryCapacity::kLargestValue > Extra::kMinimumSdoBuffer
@@ -83,7 +96,10 @@ struct SdoSizes {
 /// Storage of a NodeInstance; a base class so that it is initialised before the Node base.
 template <typename Values, typename DictionaryCapacity, typename Extra>
 struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServers,
-                                      SdoSizes<DictionaryCapacity, Extra>::kBytes> {
+                                      SdoSizes<DictionaryCapacity, Extra>::kBytes>,
+                     SrdoStorage<features::kSafety ? DictionaryCapacity::kSrdoCount : 0U> {
+  using SrdoRoom = SrdoStorage<features::kSafety ? DictionaryCapacity::kSrdoCount : 0U>;
+  static constexpr size_t kSrdos = features::kSafety ? DictionaryCapacity::kSrdoCount : 0U;
   using SdoServerRoom = SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServers,
                                          SdoSizes<DictionaryCapacity, Extra>::kBytes>;
   static constexpr size_t kSdoBytes = SdoSizes<DictionaryCapacity, Extra>::kBytes;
@@ -94,12 +110,8 @@ struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServ
       features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
   static constexpr size_t kEmcyConsumers =
       features::kEmcyConsumer ? DictionaryCapacity::kEmcyConsumers : 0U;
-  /// Two per SRDO the safety service runs (its normal and inverted CAN-IDs), and GFC.
-  static constexpr size_t kSafetyRoutes =
-      features::kSafety ? 1U + 2U * (DictionaryCapacity::kSrdoCount < SafetyService::kSrdoCapacity
-                                         ? DictionaryCapacity::kSrdoCount
-                                         : SafetyService::kSrdoCapacity)
-                        : 0U;
+  /// Two per SRDO (its normal and inverted CAN-IDs), and GFC.
+  static constexpr size_t kSafetyRoutes = features::kSafety ? 1U + 2U * kSrdos : 0U;
   /// NMT, SYNC, SDO, LSS, TIME (when compiled in), one per PDO, per consumed EMCY CAN-ID and
   /// per additional SDO server, and the safety service's.
   static constexpr size_t kRoutes = 4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos +
@@ -138,7 +150,9 @@ struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServ
                       kRoutes,
                       SdoServerRoom::slots(),
                       SdoServerRoom::buffers(),
-                      kSdoServers};
+                      kSdoServers,
+                      SrdoRoom::channels(),
+                      kSrdos};
   }
 };
 }  // namespace detail

@@ -8,9 +8,9 @@
 // sends GFC when its application asks (Node::sendGlobalFailSafe), in pre-operational and
 // operational. A GFC frame with data, or a remote frame, is ignored.
 //
-// SRDOs (srdo_configuration.hpp, srdo_channel.hpp): the first kSrdoCapacity of them
-// (0x1301..0x1304, 0x1381..0x1384) run; a valid direction in a later one makes the
-// configuration fail. Every SRDO object, 0x13FE and 0x13FF refuse writes in operational
+// SRDOs (srdo_configuration.hpp, srdo_channel.hpp): one channel for each SRDO of the
+// dictionary (0x1301..0x1340, 0x1381..0x13C0), in storage the node sizes from it
+// (NodeMemory::srdoChannels): a dictionary without SRDOs costs no channel. Every SRDO object, 0x13FE and 0x13FF refuse writes in operational
 // (0x08000022); a write accepted to any SRDO object but 0x13FE sets 0x13FE to 0 (not valid).
 // Entering operational, with 0x13FE = 0xA5 and every valid SRDO's configuration correct with
 // its signature: each transmit SRDO sends its normal then its bit-inverted frame at once and
@@ -46,7 +46,6 @@ class SafetyService : public ObjectHook {
  public:
   static constexpr uint16_t kGfcIndex = 0x1300;
   static constexpr uint16_t kGfcCanId = 0x001;
-  static constexpr uint8_t kSrdoCapacity = 4;
 
   struct Services {
     ObjectAccess& access;
@@ -56,6 +55,8 @@ class SafetyService : public ObjectHook {
     FrameRouter& routes;
     const NmtStateMachine& nmt;
     NodeClock& clock;
+    SrdoChannel* channels;  ///< one per SRDO of the dictionary (NodeMemory::srdoChannels)
+    uint8_t channelCount;
   };
 
   explicit SafetyService(const Services& services) noexcept : s_(services) {}
@@ -98,7 +99,6 @@ class SafetyService : public ObjectHook {
   bool unchanged(const SrdoChannel& channel) const noexcept;
 
   Services s_;
-  SrdoChannel channels_[kSrdoCapacity];
   uint8_t active_ = 0;    ///< slots up to the last SRDO started
   bool started_ = false;  ///< operational seen: the SRDOs were started (or failed to)
   bool running_ = false;  ///< started with a valid configuration
