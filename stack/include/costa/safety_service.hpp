@@ -10,12 +10,13 @@
 //
 // SRDOs (srdo_configuration.hpp, srdo_channel.hpp): one channel for each SRDO of the
 // dictionary (0x1301..0x1340, 0x1381..0x13C0), in storage the node sizes from it
-// (NodeMemory::srdoChannels): a dictionary without SRDOs costs no channel. Every SRDO object, 0x13FE and 0x13FF refuse writes in operational
-// (0x08000022); a write accepted to any SRDO object but 0x13FE sets 0x13FE to 0 (not valid).
-// Entering operational, with 0x13FE = 0xA5 and every valid SRDO's configuration correct with
-// its signature: each transmit SRDO sends its normal then its bit-inverted frame at once and
-// every SCT; each receive SRDO is checked (srdo_channel.hpp) and its data written to the
-// mapped entries. The configurations' signatures are checked again at every cycle.
+// (NodeMemory::srdoChannels): a dictionary without SRDOs costs no channel. Every SRDO object,
+// 0x13FE and 0x13FF refuse writes in operational (0x08000022); a write accepted to any SRDO object
+// but 0x13FE sets 0x13FE to 0 (not valid). Entering operational, with 0x13FE = 0xA5 and every valid
+// SRDO's configuration correct with its signature: each transmit SRDO sends its normal then its
+// bit-inverted frame at once and every SCT; each receive SRDO is checked (srdo_channel.hpp) and its
+// data written to the mapped entries. The configurations' signatures are checked again at every
+// cycle.
 //
 // Safe state: any failure (SrdoFailure) in operational stops every SRDO, sends an EMCY
 // (docs/manual-errata.md, "Safety") and tells the listeners (NodeEvents::onSafeState) once. The
