@@ -6,6 +6,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "costa/cob_ids.hpp"
 #include "costa/port/memory/recording_can.hpp"
@@ -104,7 +105,11 @@ class Session {
 
   std::string powerOn() {
     can_.setAccepting(true);
+    indicators_.reset();  // it listens to the node the power-on replaces
+    leds_.run = false;
+    leds_.error = false;
     device_->powerOn(now_);
+    indicators_.emplace(device_->node(), leds_);
     return runProcess();
   }
 
@@ -139,6 +144,10 @@ class Session {
     }
     if (problem.empty()) {
       problem = device_->checkDevice();
+    }
+    if (problem.empty() && indicators_) {
+      (void)indicators_->process(now_);
+      problem = checkIndicators(node, *indicators_, leds_.run, leds_.error);
     }
     port::MemoryStorage& storage = device_->storage();
     if (problem.empty() && storage.modifyingCalls() != storageChanges_) {
@@ -302,8 +311,19 @@ class Session {
     return "";
   }
 
+  /// The two LEDs of the node's CiA 303-3 indicators, as the fuzzer sees them.
+  class Leds final : public IndicatorOutputs {
+   public:
+    void setRun(bool on) noexcept override { run = on; }
+    void setError(bool on) noexcept override { error = on; }
+    bool run = false;
+    bool error = false;
+  };
+
   WatchingCan& can_;
   FuzzedDevice* device_;
+  Leds leds_;
+  std::optional<Indicators> indicators_;  ///< over the node of the latest power-on
   std::string* trace_;
   /// One second before the 32-bit clock wraps, as the transcript replays: inputs cross the wrap.
   Microseconds now_ = 0xFFFFFFFFU - 999999U;

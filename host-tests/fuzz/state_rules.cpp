@@ -83,4 +83,47 @@ std::string checkStateMachines(const Node& node, bool lss) {
   return problem;
 }
 
+namespace {
+
+IndicatorState expectedRun(const Node& node) {
+  if (node.lss().configurationState()) {
+    return IndicatorState::kFlickering;
+  }
+  switch (node.state()) {
+    case NmtState::kPreOperational: return IndicatorState::kBlinking;
+    case NmtState::kOperational: return IndicatorState::kOn;
+    case NmtState::kStopped: return IndicatorState::kSingleFlash;
+    case NmtState::kInitialising: break;
+  }
+  return IndicatorState::kOff;
+}
+
+/// An LED in a steady state shows it.
+bool showsSteadyState(IndicatorState state, bool lit) {
+  return (state != IndicatorState::kOn || lit) && (state != IndicatorState::kOff || !lit);
+}
+
+}  // namespace
+
+std::string checkIndicators(const Node& node, const Indicators& indicators, bool runLit,
+                            bool errorLit) {
+  if (indicators.run() != expectedRun(node)) {
+    return "RUN indicator state " + std::to_string(static_cast<int>(indicators.run())) +
+           " in NMT state " + describe(node.state());
+  }
+  if (node.busOff() != (indicators.error() == IndicatorState::kOn)) {
+    return "ERROR indicator on exactly while bus-off: state " +
+           std::to_string(static_cast<int>(indicators.error()));
+  }
+  if (!node.busOff() && node.lss().configurationState() &&
+      indicators.error() != IndicatorState::kFlickering) {
+    return "ERROR indicator not flickering in LSS configuration state";
+  }
+  if (!showsSteadyState(indicators.run(), runLit) ||
+      !showsSteadyState(indicators.error(), errorLit)) {
+    return "an indicator's LED does not show its steady state";
+  }
+  return "";
+}
+
 }  // namespace costa::fuzz

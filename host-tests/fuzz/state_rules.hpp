@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "costa/indicators.hpp"
 #include "costa/node.hpp"
 
 namespace costa::fuzz {
@@ -17,5 +18,13 @@ namespace costa::fuzz {
 ///  * TIME: the clock of day, once set, is before midnight.
 /// Else what is wrong.
 std::string checkStateMachines(const Node& node, bool lss);
+
+/// The CiA 303-3 indicators follow the node (indicators.hpp): RUN flickers in LSS configuration
+/// state, else blinks in pre-operational, is on in operational, single-flashes when stopped and
+/// is off without a node-id; ERROR is on while bus-off and flickers in LSS configuration state
+/// otherwise; an LED whose state is on is lit (`runLit`, `errorLit`), one whose state is off is
+/// dark. Else what is wrong.
+std::string checkIndicators(const Node& node, const Indicators& indicators, bool runLit,
+                            bool errorLit);
 
 }  // namespace costa::fuzz
