@@ -42,7 +42,7 @@ enum class IndicatorState : uint8_t {
   kOn,
 };
 
-class Indicators : public NodeEvents {
+class Indicators final : public NodeEvents {
  public:
   /// Listens to `node` (attached() says whether it found room) and drives `outputs`; both LEDs
   /// start off.
