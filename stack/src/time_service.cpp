@@ -23,10 +23,11 @@ TimeOfDay later(const TimeOfDay& time, uint32_t elapsed) noexcept {
 }  // namespace
 
 void TimeService::configure() noexcept {
+  // Without the object the default 0x100 has neither bit: no TIME.
   const auto cob = static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, 0x100));
   canId_ = static_cast<uint16_t>(cob & 0x7FFU);
-  consumer_ = dictionary_.findObject(kCobIdIndex) != nullptr && (cob & kConsume) != 0U;
-  producer_ = dictionary_.findObject(kCobIdIndex) != nullptr && (cob & kProduce) != 0U;
+  consumer_ = (cob & kConsume) != 0U;
+  producer_ = (cob & kProduce) != 0U;
   routes_.invalidate();
 }
 

@@ -40,21 +40,23 @@ SlaveTracer::Traced* SlaveTracer::addressed(const CanFrame& frame) {
   return nullptr;
 }
 
-void SlaveTracer::frameLine(const char* direction, const Traced* node, const CanFrame& frame) {
-  std::string label;
-  if (labelled_) {
-    char text[8];
-    if (node != nullptr) {
-      std::snprintf(text, sizeof(text), "@%02X ", node->target->node().nodeId());
-    } else {
-      std::snprintf(text, sizeof(text), "@-- ");
-    }
-    label = text;
+std::string SlaveTracer::label(const Traced* node) const {
+  if (!labelled_) {
+    return "";
   }
+  if (node == nullptr) {
+    return "@-- ";
+  }
+  char text[8];
+  std::snprintf(text, sizeof(text), "@%02X ", node->target->node().nodeId());
+  return text;
+}
+
+void SlaveTracer::frameLine(const char* direction, const Traced* node, const CanFrame& frame) {
   const std::string meaning = node != nullptr
                                   ? node->decoder->describe(frame, node->target->node().nodeId())
                                   : generic_.describe(frame, 0);
-  print(label, direction, formatFrame(frame), meaning);
+  print(label(node), direction, formatFrame(frame), meaning);
 }
 
 void SlaveTracer::errorFrame(const port::SocketCanEvents& events) {
@@ -94,13 +96,7 @@ void SlaveTracer::indicators(size_t index, const std::string& states) {
   if (!enabled_) {
     return;
   }
-  std::string label;
-  if (labelled_) {
-    char text[8];
-    std::snprintf(text, sizeof(text), "@%02X ", nodes_[index].target->node().nodeId());
-    label = text;
-  }
-  print(label, "--", "indicators", states);
+  print(label(&nodes_[index]), "--", "indicators", states);
 }
 
 void SlaveTracer::print(const std::string& label, const char* direction, const std::string& what,

@@ -48,6 +48,8 @@ class SlaveTracer {
   };
 
   void frameLine(const char* direction, const Traced* node, const CanFrame& frame);
+  /// "@05 " for a node, "@-- " for none, "" when lines are not labelled.
+  std::string label(const Traced* node) const;
   /// The node whose node-id the CAN-ID of `frame` carries (a received frame), or null.
   Traced* addressed(const CanFrame& frame);
   void print(const std::string& label, const char* direction, const std::string& what,
