@@ -37,7 +37,7 @@ struct NodeMemory {
   size_t emcyQueueCapacity;
   HeartbeatMonitor* heartbeatMonitors;  ///< One per sub-index of 0x1016.
   size_t heartbeatMonitorCapacity;
-  RouteEntry* routes;  ///< The frame routing table: NMT, SYNC, SDO, LSS, TIME and every PDO.
+  RouteEntry* routes;  ///< The frame routing table: one entry per CAN-ID a service takes.
   size_t routeCapacity;
   SdoServerSlot* sdoServerSlots;  ///< One per additional SDO server (0x1201..0x127F).
   uint8_t* sdoServerBuffers;      ///< sdoBufferSize bytes per additional SDO server.
