@@ -10,6 +10,7 @@
 
 #include "bare_node_bus.hpp"
 #include "costa/features.hpp"
+#include "costa/indicators.hpp"
 
 #ifndef COSTA_EXPECTED_FEATURES
 #error "COSTA_EXPECTED_FEATURES (the features CMake compiled in, such as \"LSS,SDO_BLOCK\")"
@@ -49,6 +50,7 @@ TEST(FeaturesBuild, IsTheVariantCMakeAskedFor) {
   add(features::kEmcyConsumer, "EMCY_CONSUMER");
   add(features::kSdoServers, "SDO_SERVERS");
   add(features::kSafety, "SAFETY");
+  add(features::kIndicators, "INDICATORS");
   EXPECT_EQ(compiledIn, COSTA_EXPECTED_FEATURES);
 }
 
@@ -233,6 +235,31 @@ TEST_F(FeaturesTest, NothingIsStoredWithoutParameterStorage) {
                  lines(features::kParameterStorage, "tx 581 [8] 60 11 10 01 00 00 00 00",
                        "tx 581 [8] 80 11 10 01 00 00 02 06")),
             "");
+}
+
+/// Each switch of the two LEDs, as "1" (on) and "0" (off).
+class RecordingLeds final : public IndicatorOutputs {
+ public:
+  void setRun(bool on) noexcept override { run += on ? "1" : "0"; }
+  void setError(bool on) noexcept override { error += on ? "1" : "0"; }
+  std::string run;
+  std::string error;
+};
+
+TEST_F(FeaturesTest, IndicatorsDriveTheLedsOnlyInABuildWithThem) {
+  RecordingLeds leds;
+  IndicatorsChoice indicators(bus_->node(), leds);
+  EXPECT_EQ(play("tx 701 [1] 00  # boot-up: pre-operational\n"), "");
+  constexpr Microseconds kStart = 5000000;
+  EXPECT_EQ(indicators.process(kStart), features::kIndicators ? kStart + 200000U : kNever);
+  EXPECT_EQ(indicators.process(kStart + 200000U),
+            features::kIndicators ? kStart + 400000U : kNever);
+  // Blinking: on, then off 200 ms later; no error. Without the feature, nothing is driven.
+  EXPECT_EQ(leds.run, features::kIndicators ? "10" : "");
+  EXPECT_EQ(leds.error, "");
+  EXPECT_EQ(indicators.attached(), features::kIndicators);
+  EXPECT_EQ(indicators.run(),
+            features::kIndicators ? IndicatorState::kBlinking : IndicatorState::kOff);
 }
 
 TEST_F(FeaturesTest, EveryBuildHasNmtHeartbeatSdoAndPdos) {

@@ -1,5 +1,7 @@
-// The example device on an STM32F4: CAN1 through the bxCAN driver, time from SysTick.
+// The example device on an STM32F4: CAN1 through the bxCAN driver, time from SysTick, the
+// CiA 303-3 RUN and ERROR LEDs on two GPIOs (when the build has COSTA_FEATURE_INDICATORS).
 // See port/stm32/README.md; the board assumptions are in stm32f4_board.hpp.
+#include "costa/indicators.hpp"
 #include "costa/port/stm32/bxcan_bit_timing.hpp"
 #include "costa/port/stm32/bxcan_port.hpp"
 #include "example_target.hpp"
@@ -28,6 +30,9 @@ costa::DeviceConfig config() noexcept {
 }
 
 costa::example::ExampleTarget target(can, config());  // node-id 1, no storage
+
+costa::firmware::stm32f4::BoardLeds leds;
+costa::IndicatorsChoice indicators(target.node(), leds);  // after the target: it listens to it
 
 /// Programs CAN1's filter banks with what the node listens to, when that changed (at start-up,
 /// reset communication, a PDO's COB-ID written): frames for other nodes never reach the FIFO.
@@ -66,6 +71,7 @@ AcceptanceFilters filters;
 
 int main() {
   costa::firmware::stm32f4::connectCan1ToPb8Pb9();
+  leds.connect();
   costa::firmware::SysTickClock clock;
   if (!clock.start(costa::firmware::stm32f4::kCoreClockHz)) {
     halt();
@@ -85,7 +91,8 @@ int main() {
     while (can.receive(&frame)) {
       target.onFrame(frame, now);
     }
-    target.process(now);  // timers, and frames that waited for a free mailbox
+    target.process(now);            // timers, and frames that waited for a free mailbox
+    (void)indicators.process(now);  // the next edge: this loop polls, it needs no wake-up
     filters.update(target.node());
   }
 }

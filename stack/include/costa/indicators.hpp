@@ -1,7 +1,9 @@
 // The CiA 303-3 indicator states of a node: the RUN and ERROR LEDs, derived from the node's
 // NMT state, LSS, error control and CAN controller, and driven through IndicatorOutputs with
-// the standard's timing. A layer over the node's public API (a listener), optional by use: an
-// image that creates no Indicators links none of it.
+// the standard's timing. A layer over the node's public API (a listener), optional twice: an
+// image that creates no Indicators links none of it, and a build without
+// COSTA_FEATURE_INDICATORS compiles none of it (IndicatorsChoice below is then a stand-in that
+// drives nothing).
 //
 //   pattern         the LED                                 RUN                ERROR
 //   off             off                                     no node-id yet     no error
@@ -27,6 +29,8 @@
 
 #include <stdint.h>
 
+#include "costa/compiled_out.hpp"
+#include "costa/features.hpp"
 #include "costa/node.hpp"
 #include "costa/port/indicator_outputs.hpp"
 
@@ -90,5 +94,25 @@ class Indicators final : public NodeEvents {
   bool lifeGuardingExpired_ = false;
   bool attached_;  ///< last: the rest is ready when the node may call it
 };
+
+/// Indicators in a build without them (features::kIndicators false): nothing attached, both
+/// states off, no output ever switched.
+class AbsentIndicators {
+ public:
+  AbsentIndicators(Node& node, IndicatorOutputs& outputs) noexcept {
+    (void)node;
+    (void)outputs;
+  }
+  bool attached() const noexcept { return false; }
+  Microseconds process(Microseconds now) noexcept {
+    (void)now;
+    return kNever;
+  }
+  IndicatorState run() const noexcept { return IndicatorState::kOff; }
+  IndicatorState error() const noexcept { return IndicatorState::kOff; }
+};
+
+/// The LEDs an image drives when its build has them: Indicators, or the stand-in.
+using IndicatorsChoice = ServiceIf<features::kIndicators, Indicators, AbsentIndicators>;
 
 }  // namespace costa
