@@ -41,5 +41,18 @@ TEST(Crc16, KnownValues) {
   EXPECT_EQ(crc16(label, sizeof(label)), 0x7375);
 }
 
+// The worked example of an SRDO signature (0x13FF, CiA 304) in SICK's scanGrid2 CANopen
+// operating instructions (8025990/2021-03-03, 4.5.3 "Checksum calculation"): an RSRDO with
+// direction 2, SCT 0x0032, SRVT 0x14, COB-IDs 0x111 / 0x112 and the mapping 0x60100108,
+// 0x60110108, 0x60100208, 0x60110208, each value little-endian, each entry after its sub-index;
+// the document gives the checksum 0x4370.
+TEST(Crc16, PublishedSrdoSignature) {
+  const uint8_t configuration[] = {0x02, 0x32, 0x00, 0x14, 0x11, 0x01, 0x00, 0x00, 0x12,
+                                   0x01, 0x00, 0x00, 0x04, 0x01, 0x08, 0x01, 0x10, 0x60,
+                                   0x02, 0x08, 0x01, 0x11, 0x60, 0x03, 0x08, 0x02, 0x10,
+                                   0x60, 0x04, 0x08, 0x02, 0x11, 0x60};
+  EXPECT_EQ(crc16(configuration, sizeof(configuration)), 0x4370);
+}
+
 }  // namespace
 }  // namespace costa

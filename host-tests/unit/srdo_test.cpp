@@ -177,6 +177,41 @@ TEST_F(SrdoTest, AWrongSignatureEntersTheSafeStateOnEnteringOperational) {
   expectSafeState(2, SrdoFailure::kSignature);
 }
 
+// The signature a configuration tool computes, worked outside Costa: CRC-16/XMODEM (polynomial
+// 0x1021, initial value 0, most significant bit first, no final XOR) over direction (1 byte), SCT
+// (2, little-endian), SRVT (1), COB-ID 1 (4, little-endian), COB-ID 2 (4), mapping count (1),
+// then per entry its sub-index (1) and value (4, little-endian). SRDO 2 with SCT 50 ms and
+// COB-IDs 0x111 / 0x112 (the example mapping kept):
+//   02 | 32 00 | 14 | 11 01 00 00 | 12 01 00 00 | 04 | 01 10 02 05 20 | 02 10 02 05 20
+//      | 03 10 03 05 20 | 04 10 03 05 20                                     -> 0x8973
+// by: c = 0; for each byte b: c ^= b << 8; 8 times: c = ((c << 1) ^ 0x1021 if c & 0x8000
+// else c << 1) & 0xFFFF. The same steps give 0x4370 for the SRDO of SICK's scanGrid2 CANopen
+// operating instructions (8025990/2021-03-03, 4.5.3 "Checksum calculation"), crc16_test.cpp.
+// The same values big-endian would give 0xB6DA.
+TEST_F(SrdoTest, ASignatureComputedByAToolFromTheParametersIsAccepted) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 02 13 02 32 00 00 00   # SCT 50 ms
+    tx 581 [8] 60 02 13 02 00 00 00 00
+    rx 601 [8] 23 02 13 05 11 01 00 00   # COB-ID 1 0x111
+    tx 581 [8] 60 02 13 05 00 00 00 00
+    rx 601 [8] 23 02 13 06 12 01 00 00   # COB-ID 2 0x112
+    tx 581 [8] 60 02 13 06 00 00 00 00
+    rx 601 [8] 2B FF 13 02 73 89 00 00   # signature 0x8973
+    tx 581 [8] 60 FF 13 02 00 00 00 00
+  )");
+  EXPECT_TRANSCRIPT(kValidate);
+  EXPECT_TRANSCRIPT(kStart);  // no EMCY: the signature matches
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [4] 11 22 33 44             # the old COB-ID: not SRDO 2's any more
+    rx 111 [4] 11 22 33 44
+    rx 112 [4] EE DD CC BB
+    rx 601 [8] 40 05 20 02 00 00 00 00
+    tx 581 [8] 4B 05 20 02 11 22 00 00
+  )");
+  EXPECT_TRUE(bus_.node().workingStateAllowed());
+  EXPECT_EQ(log_.count, 0U);
+}
+
 TEST_F(SrdoTest, AConfigurationChangedWhileOperationalEntersTheSafeState) {
   startSafety();
   EXPECT_TRANSCRIPT(R"(

@@ -10,7 +10,8 @@ namespace {
 
 constexpr uint8_t kCommunicationErrorBit = 0x10;
 
-/// EMCY error code of a failure (docs/manual-errata.md, "Safety").
+/// EMCY error code of a failure: CiA 301's closest, CiA 304 names none (docs/manual-errata.md,
+/// "SRDO failures and the safe state").
 uint16_t emcyCode(SrdoFailure failure) noexcept {
   switch (failure) {
     case SrdoFailure::kCycleTime:

@@ -19,9 +19,10 @@
 // cycle.
 //
 // Safe state: any failure (SrdoFailure) in operational stops every SRDO, sends an EMCY
-// (docs/manual-errata.md, "Safety") and tells the listeners (NodeEvents::onSafeState) once. The
-// working state is allowed (Node::workingStateAllowed, which the application polls) only in
-// operational, with a valid configuration and no failure since operational was entered.
+// (docs/manual-errata.md, "SRDO failures and the safe state") and tells the listeners
+// (NodeEvents::onSafeState) once; the NMT state stays operational. The working state is
+// allowed (Node::workingStateAllowed, which the application polls) only in operational, with a
+// valid configuration and no failure since operational was entered.
 //
 // Context: the one that runs the node. Frames and deadlines O(1) but for the mapped entries.
 #pragma once

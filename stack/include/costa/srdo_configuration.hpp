@@ -7,7 +7,9 @@
 // The signature (0x13FF:n) is the CRC-16 of CiA 301 (crc16.hpp, polynomial 0x1021, initial 0)
 // over, in this order: direction (1 byte), SCT (2 bytes, little-endian), SRVT (1), COB-ID 1
 // (4, little-endian), COB-ID 2 (4), mapping count (1), then per mapping entry its sub-index
-// (1) and its value (4, little-endian). The transmission type is not part of it.
+// (1) and its value (4, little-endian); each value as the object reads (a $NODEID default with
+// the node-id added). The transmission type is not part of it. A configuration tool computes
+// the same bytes (docs/manual-errata.md, "SRDO signature").
 //
 // Also the write rules of these objects (checkSrdoWrite) and of a mapping as a whole.
 #pragma once
