@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <algorithm>
 #include <map>
 #include <utility>
 #include <vector>
@@ -43,6 +44,22 @@ struct PdoCobId {
 /// A 32-bit value read in place (the checks call none of the stack's code, which the fuzzer
 /// instruments): from the RAM block, or the ROM block for a constant (which holds a `$NODEID`
 /// value without the node-id).
+/// Calls `visit(index)` for each object of `dictionary` in [first, last], in index order. The
+/// same as trying every index of the range, for a rule that looks at existing objects only,
+/// at a cost of the objects there (the checks run after every event of every input).
+template <typename Visit>
+void forEachObjectIn(const od::ObjectDictionary& dictionary, uint16_t first, uint16_t last,
+                     Visit visit) {
+  const od::Definition& definition = dictionary.definition();
+  const od::Object* end = definition.objects + definition.objectCount;
+  const od::Object* object =
+      std::lower_bound(definition.objects, end, first,
+                       [](const od::Object& o, uint16_t index) { return o.index < index; });
+  for (; object != end && object->index <= last; ++object) {
+    visit(object->index);
+  }
+}
+
 uint32_t u32At(const od::ObjectDictionary& dictionary, const od::EntryRef& ref) {
   const void* block = ref.inRom() ? dictionary.definition().constants : dictionary.values();
   uint32_t value = 0;
@@ -156,14 +173,13 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
   }
   ids.add(cob::kSdoTxBase + nodeId);
   const od::ObjectDictionary& dictionary = node.dictionary();
-  for (uint16_t index = 0x1201; index <= 0x127F; ++index) {
+  forEachObjectIn(dictionary, 0x1201, 0x127F, [&](uint16_t index) {
     // An additional server's responses (answers under way when it was reconfigured included).
     const uint32_t response = static_cast<uint32_t>(dictionary.readUnsigned(index, 2, ~0U));
-    if (dictionary.findObject(index) != nullptr && plainStandardId(response & ~kInvalidBit) &&
-        !restrictedCanId(response & kIdBits)) {
+    if (plainStandardId(response & ~kInvalidBit) && !restrictedCanId(response & kIdBits)) {
       ids.add(response & kIdBits);
     }
-  }
+  });
   const CobIdEntries& cobIds = cobIdEntries(dictionary.definition());
   if (!cobIds.emcy.valid()) {
     ids.add(cob::kEmcyBase + nodeId);
@@ -195,7 +211,7 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
     }
   });
   // Transmit SRDOs (CiA 304): their two COB-IDs, which CiA 304 keeps in 0x101..0x180.
-  for (uint16_t index = 0x1301; index <= 0x1340; ++index) {
+  forEachObjectIn(dictionary, 0x1301, 0x1340, [&](uint16_t index) {
     if (dictionary.readUnsigned(index, 1, 0) == 1U) {
       for (uint8_t sub = 5; sub <= 6; ++sub) {
         const auto id = static_cast<uint32_t>(dictionary.readUnsigned(index, sub, 0));
@@ -204,7 +220,7 @@ CanIdSet allowedTransmitIds(const Node& node, bool lss) {
         }
       }
     }
-  }
+  });
   return ids;
 }
 
@@ -238,23 +254,28 @@ std::string checkConfiguredCanIds(const Node& node) {
       return "valid EMCY consumer entry " + hex(entry) + " has a restricted or 29-bit CAN-ID";
     }
   }
-  for (uint16_t index = 0x1201; index <= 0x127F; ++index) {
-    for (uint8_t sub = 1; sub <= 2U && dictionary.findObject(index) != nullptr; ++sub) {
+  std::string found;
+  forEachObjectIn(dictionary, 0x1201, 0x127F, [&](uint16_t index) {
+    for (uint8_t sub = 1; sub <= 2U && found.empty(); ++sub) {
       const auto cob = static_cast<uint32_t>(dictionary.readUnsigned(index, sub, kInvalidBit));
       if ((cob & kInvalidBit) == 0U && (restrictedCanId(cob & kIdBits) || !plainStandardId(cob))) {
-        return "valid SDO server COB-ID " + hex(cob) + " at " + hex(index) +
-               " has a restricted or 29-bit CAN-ID";
+        found = "valid SDO server COB-ID " + hex(cob) + " at " + hex(index) +
+                " has a restricted or 29-bit CAN-ID";
       }
     }
-  }
-  for (uint16_t index = 0x1301; index <= 0x1340; ++index) {
+  });
+  forEachObjectIn(dictionary, 0x1301, 0x1340, [&](uint16_t index) {
     const uint64_t direction = dictionary.readUnsigned(index, 1, 0);
     const uint64_t normal = dictionary.readUnsigned(index, 5, 0x101);
     const uint64_t inverted = dictionary.readUnsigned(index, 6, 0x102);
-    if (direction != 0U && (normal < 0x101U || normal > 0x180U || (normal & 1U) == 0U ||
-                            inverted < 0x101U || inverted > 0x180U || (inverted & 1U) != 0U)) {
-      return "SRDO " + hex(index) + " has a COB-ID outside 0x101..0x180 or of the wrong parity";
+    if (found.empty() && direction != 0U &&
+        (normal < 0x101U || normal > 0x180U || (normal & 1U) == 0U || inverted < 0x101U ||
+         inverted > 0x180U || (inverted & 1U) != 0U)) {
+      found = "SRDO " + hex(index) + " has a COB-ID outside 0x101..0x180 or of the wrong parity";
     }
+  });
+  if (!found.empty()) {
+    return found;
   }
   if (cobIds.time.valid()) {
     const uint32_t time = u32At(dictionary, cobIds.time);
