@@ -275,25 +275,86 @@ TEST_F(SrdoTest, WritesFollowTheRulesAndInvalidateTheConfiguration) {
   )");
 }
 
-TEST_F(SrdoTest, AMappingIsPairsOfTheSameEntry) {
+TEST_F(SrdoTest, AMappingIsPairsOfANormalAndAnInvertedEntryOfTheSameSize) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 02 13 01 00 00 00 00   # SRDO 2 not valid
     tx 581 [8] 60 02 13 01 00 00 00 00
     rx 601 [8] 2F 82 13 00 00 00 00 00
     tx 581 [8] 60 82 13 00 00 00 00 00
-    rx 601 [8] 23 82 13 02 10 04 05 20   # inverted: 0x2005:04, normal 0x2005:02
+    rx 601 [8] 23 82 13 02 20 00 00 20   # inverted: 0x2000 (32 bits), normal 0x2005:02 (16)
     tx 581 [8] 60 82 13 02 00 00 00 00
     rx 601 [8] 2F 82 13 00 02 00 00 00
     tx 581 [8] 80 82 13 00 43 00 04 06
     rx 601 [8] 2F 82 13 00 03 00 00 00   # odd count
     tx 581 [8] 80 82 13 00 42 00 04 06
-    rx 601 [8] 23 82 13 02 10 02 05 20
+    rx 601 [8] 23 82 13 02 10 04 05 20   # inverted: 0x2005:04, an entry of its own
     tx 581 [8] 60 82 13 02 00 00 00 00
     rx 601 [8] 2F 82 13 00 02 00 00 00
     tx 581 [8] 60 82 13 00 00 00 00 00
     rx 601 [8] 23 82 13 01 10 02 05 20   # entries only while the count is 0
     tx 581 [8] 80 82 13 01 22 00 00 08
   )");
+}
+
+// CiA 304 maps the inverted data as an object of its own, which the application keeps. SRDO 1
+// with the inverted data of 0x2005:01 in 0x2005:04; signature (worked as above) over
+//   01 | 64 00 | 14 | 01 01 00 00 | 02 01 00 00 | 04 | 01 20 00 01 20 | 02 20 00 01 20
+//      | 03 10 01 05 20 | 04 10 04 05 20                                     -> 0xFE4A
+TEST_F(SrdoTest, ATransmitSrdoSendsTheApplicationsInvertedEntryAsItIs) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 01 13 01 00 00 00 00   # SRDO 1 not valid
+    tx 581 [8] 60 01 13 01 00 00 00 00
+    rx 601 [8] 2F 81 13 00 00 00 00 00
+    tx 581 [8] 60 81 13 00 00 00 00 00
+    rx 601 [8] 23 81 13 04 10 04 05 20   # the inverted data of 0x2005:01 is 0x2005:04
+    tx 581 [8] 60 81 13 04 00 00 00 00
+    rx 601 [8] 2F 81 13 00 04 00 00 00
+    tx 581 [8] 60 81 13 00 00 00 00 00
+    rx 601 [8] 2F 01 13 01 01 00 00 00   # transmit
+    tx 581 [8] 60 01 13 01 00 00 00 00
+    rx 601 [8] 2B FF 13 01 4A FE 00 00   # signature 0xFE4A
+    tx 581 [8] 60 FF 13 01 00 00 00 00
+    rx 601 [8] 2B 05 20 04 78 56 00 00   # the application's copy: not the NOT of 0x1234
+    tx 581 [8] 60 05 20 04 00 00 00 00
+  )");
+  EXPECT_TRANSCRIPT(kValidate);
+  EXPECT_TRANSCRIPT(R"(
+    rx 000 [2] 01 00
+    tx 101 [6] 00 00 00 00 34 12
+    tx 102 [6] FF FF FF FF 78 56         # as the application keeps it: the receivers judge it
+  )");
+  EXPECT_EQ(log_.count, 0U);
+}
+
+// SRDO 2 with the inverted data of 0x2005:02 in 0x2005:04; signature over
+//   02 | 64 00 | 14 | 03 01 00 00 | 04 01 00 00 | 02 | 01 10 02 05 20 | 02 10 04 05 20 -> 0x0AAF
+TEST_F(SrdoTest, AReceiveSrdoWritesTheInvertedDataToItsOwnEntry) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 02 13 01 00 00 00 00   # SRDO 2 not valid
+    tx 581 [8] 60 02 13 01 00 00 00 00
+    rx 601 [8] 2F 82 13 00 00 00 00 00
+    tx 581 [8] 60 82 13 00 00 00 00 00
+    rx 601 [8] 23 82 13 02 10 04 05 20   # the inverted data of 0x2005:02 is 0x2005:04
+    tx 581 [8] 60 82 13 02 00 00 00 00
+    rx 601 [8] 2F 82 13 00 02 00 00 00   # one pair: 2 bytes
+    tx 581 [8] 60 82 13 00 00 00 00 00
+    rx 601 [8] 2F 02 13 01 02 00 00 00   # receive
+    tx 581 [8] 60 02 13 01 00 00 00 00
+    rx 601 [8] 2B FF 13 02 AF 0A 00 00   # signature 0x0AAF
+    tx 581 [8] 60 FF 13 02 00 00 00 00
+  )");
+  EXPECT_TRANSCRIPT(kValidate);
+  EXPECT_TRANSCRIPT(kStart);
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [2] 11 22
+    rx 104 [2] EE DD
+    rx 601 [8] 40 05 20 02 00 00 00 00
+    tx 581 [8] 4B 05 20 02 11 22 00 00
+    rx 601 [8] 40 05 20 04 00 00 00 00
+    tx 581 [8] 4B 05 20 04 EE DD 00 00   # the inverted frame's bytes
+  )");
+  EXPECT_TRUE(bus_.node().workingStateAllowed());
+  EXPECT_EQ(log_.count, 0U);
 }
 
 }  // namespace

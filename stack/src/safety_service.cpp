@@ -10,6 +10,20 @@ namespace {
 
 constexpr uint8_t kCommunicationErrorBit = 0x10;
 
+/// The entry that sub-index `sub` of SRDO mapping object `mapping` names (not valid: none).
+od::EntryRef mappedEntry(const od::ObjectDictionary& dictionary, uint16_t mapping,
+                         uint8_t sub) noexcept {
+  const auto entry = static_cast<uint32_t>(dictionary.readUnsigned(mapping, sub, 0));
+  return dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U));
+}
+
+/// The inverted data of the pair at `sub` has an entry of its own (CiA 304: the application's
+/// inverted copy), rather than the normal entry again (the stack inverts it).
+bool ownInvertedEntry(const od::ObjectDictionary& dictionary, uint16_t mapping,
+                      uint8_t sub) noexcept {
+  return dictionary.readUnsigned(mapping, sub, 0) != dictionary.readUnsigned(mapping, sub + 1U, 0);
+}
+
 /// EMCY error code of a failure: CiA 301's closest, CiA 304 names none (docs/manual-errata.md,
 /// "SRDO failures and the safe state").
 uint16_t emcyCode(SrdoFailure failure) noexcept {
@@ -151,19 +165,25 @@ void SafetyService::transmit(const SrdoChannel& channel) noexcept {
   CanFrame normal;
   normal.id = c.normalId;
   normal.dlc = c.length;
+  CanFrame inverted;
+  inverted.id = c.invertedId;
+  inverted.dlc = c.length;
   size_t offset = 0;
   for (uint8_t sub = 1; sub < c.mappedCount; sub = static_cast<uint8_t>(sub + 2U)) {
-    const auto entry = static_cast<uint32_t>(dictionary.readUnsigned(mapping, sub, 0));
-    const od::EntryRef ref =
-        dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U));
-    if (ref.valid() && offset + ref.size() <= sizeof(normal.data)) {
-      offset += dictionary.read(ref, 0, normal.data + offset, ref.size());
+    const od::EntryRef ref = mappedEntry(dictionary, mapping, sub);
+    if (!ref.valid() || offset + ref.size() > sizeof(normal.data)) {
+      continue;  // not after checkSrdoMapping() (the configuration is checked every cycle)
     }
-  }
-  CanFrame inverted = normal;
-  inverted.id = c.invertedId;
-  for (uint8_t i = 0; i < c.length; ++i) {
-    inverted.data[i] = static_cast<uint8_t>(~normal.data[i]);
+    const size_t size = dictionary.read(ref, 0, normal.data + offset, ref.size());
+    const od::EntryRef copy = mappedEntry(dictionary, mapping, static_cast<uint8_t>(sub + 1U));
+    if (ownInvertedEntry(dictionary, mapping, sub) && copy.valid() && copy.size() == size) {
+      (void)dictionary.read(copy, 0, inverted.data + offset, size);  // the application's copy
+    } else {
+      for (size_t i = offset; i < offset + size; ++i) {
+        inverted.data[i] = static_cast<uint8_t>(~normal.data[i]);  // one entry: inverted here
+      }
+    }
+    offset += size;
   }
   s_.tx.send(normal);
   s_.tx.send(inverted);
@@ -175,13 +195,23 @@ void SafetyService::deliver(const SrdoChannel& channel) noexcept {
   const auto mapping = static_cast<uint16_t>(srdo::kFirstMapping + c.number - 1U);
   size_t offset = 0;
   for (uint8_t sub = 1; sub < c.mappedCount; sub = static_cast<uint8_t>(sub + 2U)) {
-    const auto entry = static_cast<uint32_t>(dictionary.readUnsigned(mapping, sub, 0));
-    const od::EntryRef ref =
-        dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U));
-    if (ref.valid() && offset + ref.size() <= c.length) {
-      (void)s_.access.write(ref, channel.data() + offset, ref.size());
-      offset += ref.size();
+    const od::EntryRef ref = mappedEntry(dictionary, mapping, sub);
+    if (!ref.valid() || offset + ref.size() > c.length) {
+      continue;
     }
+    const size_t size = ref.size();
+    (void)s_.access.write(ref, channel.data() + offset, size);
+    const od::EntryRef copy = mappedEntry(dictionary, mapping, static_cast<uint8_t>(sub + 1U));
+    if (ownInvertedEntry(dictionary, mapping, sub) && copy.valid() && copy.size() == size) {
+      // The inverted frame was checked to be the NOT of the normal one: its bytes, for the
+      // application's inverted copy.
+      uint8_t bytes[8] = {};
+      for (size_t i = 0; i < size; ++i) {
+        bytes[i] = static_cast<uint8_t>(~channel.data()[offset + i]);
+      }
+      (void)s_.access.write(copy, bytes, size);
+    }
+    offset += size;
   }
 }
 

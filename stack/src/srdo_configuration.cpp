@@ -20,6 +20,30 @@ bool idAllowed(uint32_t id, bool inverted) noexcept {
   return id >= kLowestId && id <= kHighestId && (id & 1U) == (inverted ? 0U : 1U);
 }
 
+/// One mapping entry (index << 16 | sub-index << 8 | bits): an existing entry (0x06020000 /
+/// 0x06090011), mappable in `direction` (0x06040041), whole bytes equal to its size (0x06040043).
+AbortCode checkSrdoEntry(const od::ObjectDictionary& dictionary, uint32_t entry, uint8_t direction,
+                         size_t* size) noexcept {
+  if ((entry & 7U) != 0U || entry == 0U) {
+    return AbortCode::kParameterIncompatible;
+  }
+  od::EntryRef ref;
+  const AbortCode found =
+      dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U), &ref);
+  if (found != AbortCode::kNone) {
+    return found;
+  }
+  const od::Attribute needed = direction == srdo::kReceive ? od::kRpdoMappable : od::kTpdoMappable;
+  if (!ref.has(needed)) {
+    return AbortCode::kNotMappable;
+  }
+  if ((entry & 0xFFU) != ref.size() * 8U) {
+    return AbortCode::kParameterIncompatible;
+  }
+  *size = ref.size();
+  return AbortCode::kNone;
+}
+
 }  // namespace
 
 AbortCode checkSrdoMapping(const od::ObjectDictionary& dictionary, uint16_t mappingIndex,
@@ -31,24 +55,19 @@ AbortCode checkSrdoMapping(const od::ObjectDictionary& dictionary, uint16_t mapp
   for (uint8_t sub = 1; sub < count; sub = static_cast<uint8_t>(sub + 2U)) {
     const auto normal = static_cast<uint32_t>(dictionary.readUnsigned(mappingIndex, sub, 0));
     const auto inverted = static_cast<uint32_t>(dictionary.readUnsigned(mappingIndex, sub + 1U, 0));
-    if (normal != inverted || (normal & 7U) != 0U || normal == 0U) {
-      return AbortCode::kParameterIncompatible;
+    size_t normalSize = 0;
+    size_t invertedSize = 0;
+    AbortCode verdict = checkSrdoEntry(dictionary, normal, direction, &normalSize);
+    if (verdict == AbortCode::kNone) {
+      verdict = checkSrdoEntry(dictionary, inverted, direction, &invertedSize);
     }
-    od::EntryRef ref;
-    const AbortCode found = dictionary.find(static_cast<uint16_t>(normal >> 16U),
-                                            static_cast<uint8_t>(normal >> 8U), &ref);
-    if (found != AbortCode::kNone) {
-      return found;
+    if (verdict != AbortCode::kNone) {
+      return verdict;
     }
-    const od::Attribute needed =
-        direction == srdo::kReceive ? od::kRpdoMappable : od::kTpdoMappable;
-    if (!ref.has(needed)) {
-      return AbortCode::kNotMappable;
+    if (normalSize != invertedSize) {
+      return AbortCode::kParameterIncompatible;  // the inverted data is as long as the normal
     }
-    if ((normal & 0xFFU) != ref.size() * 8U) {
-      return AbortCode::kParameterIncompatible;
-    }
-    bytes += ref.size();
+    bytes += normalSize;
     if (bytes > kLongestData) {
       return AbortCode::kMappingTooLong;
     }

@@ -15,7 +15,10 @@
 // but 0x13FE sets 0x13FE to 0 (not valid). Entering operational, with 0x13FE = 0xA5 and every valid
 // SRDO's configuration correct with its signature: each transmit SRDO sends its normal then its
 // bit-inverted frame at once and every SCT; each receive SRDO is checked (srdo_channel.hpp) and its
-// data written to the mapped entries. The configurations' signatures are checked again at every
+// data written to the mapped entries. An inverted entry of its own (CiA 304: the application's
+// inverted copy) fills the inverted frame as it is, and a received pair writes the inverted
+// frame's bytes to it; a pair that maps the normal entry twice has its inverted data made by the
+// stack (the NOT of the normal bytes). The configurations' signatures are checked again at every
 // cycle.
 //
 // Safe state: any failure (SrdoFailure) in operational stops every SRDO, sends an EMCY

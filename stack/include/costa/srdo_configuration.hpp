@@ -2,7 +2,8 @@
 // (n = 1..64: 01 information direction 0 not valid / 1 transmit / 2 receive, 02 SCT in ms
 // UNSIGNED16, 03 SRVT in ms UNSIGNED8, 04 transmission type 254, 05 COB-ID of the normal data,
 // 06 COB-ID of the inverted data) and mapping 0x1381 + n - 1 (00 count, even; odd sub-indices
-// map the normal data, each following even one the same entry for the inverted copy).
+// map the normal data, each following even one its inverted copy: an entry of the same size
+// that the application keeps (CiA 304), or the normal entry again, which the stack inverts).
 //
 // The signature (0x13FF:n) is the CRC-16 of CiA 301 (crc16.hpp, polynomial 0x1021, initial 0)
 // over, in this order: direction (1 byte), SCT (2 bytes, little-endian), SRVT (1), COB-ID 1
@@ -63,9 +64,11 @@ SrdoCheck readSrdoConfiguration(const od::ObjectDictionary& dictionary, uint8_t 
                                 SrdoConfiguration* out) noexcept;
 
 /// Checks the first `count` entries of mapping object `mappingIndex` for `direction`: pairs of
-/// identical entries (else 0x06040043), each an existing entry (0x06020000 / 0x06090011)
-/// mappable in that direction (0x06040041) with its length in whole bytes equal to its size
-/// (0x06040043), at most 8 bytes in all (0x06040042). On success, *length = the bytes.
+/// a normal (odd sub-index) and an inverted (even) entry of the same size (else 0x06040043),
+/// each an existing entry (0x06020000 / 0x06090011) mappable in that direction (0x06040041)
+/// with its length in whole bytes equal to its size (0x06040043), at most 8 bytes of normal
+/// data in all (0x06040042). The inverted entry may be the normal one again: the stack then
+/// inverts the value itself. On success, *length = the bytes of each frame.
 AbortCode checkSrdoMapping(const od::ObjectDictionary& dictionary, uint16_t mappingIndex,
                            uint8_t count, uint8_t direction, uint8_t* length) noexcept;
 
