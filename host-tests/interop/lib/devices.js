@@ -19,8 +19,8 @@ const devices = {
       // every rule on the wire).
       '1301': 'SRDO 1 communication: direction 0..2, SCT and SRVT not 0, type 254, COB-IDs 0x101..0x180 odd/even',
       '1302': 'SRDO 2 communication: direction 0..2, SCT and SRVT not 0, type 254, COB-IDs 0x101..0x180 odd/even',
-      '1381': 'SRDO 1 mapping: written only while SRDO 1 is not valid (0x1301:01 = 0), pairs of the same entry',
-      '1382': 'SRDO 2 mapping: written only while SRDO 2 is not valid (0x1302:01 = 0), pairs of the same entry',
+      '1381': 'SRDO 1 mapping: written only while SRDO 1 is not valid (0x1301:01 = 0), pairs of a normal and an inverted entry of the same size',
+      '1382': 'SRDO 2 mapping: written only while SRDO 2 is not valid (0x1302:01 = 0), pairs of a normal and an inverted entry of the same size',
     },
   },
   solo: {
