@@ -17,7 +17,8 @@ endif()
 
 add_library(costa_freestanding INTERFACE)
 target_compile_options(costa_freestanding INTERFACE
-  -ffreestanding -fno-exceptions -fno-threadsafe-statics)
+  -ffreestanding -fno-exceptions -fno-threadsafe-statics
+  $<$<CXX_COMPILER_ID:GNU>:-fno-devirtualize-speculatively>)
 # The sanitizer build keeps RTTI in the core: UBSan's vptr check verifies the dynamic type of
 # every polymorphic object that host code calls, and needs the core's type information for that.
 # Every other build (host, firmware) proves that the core needs no RTTI.
