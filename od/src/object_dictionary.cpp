@@ -190,6 +190,23 @@ size_t ObjectDictionary::read(const EntryRef& ref, size_t offset, uint8_t* desti
   return count;
 }
 
+size_t ObjectDictionary::readWhole(const EntryRef& ref, uint8_t* destination) const noexcept {
+  const DataType type = ref.type();
+  if (isNumeric(type) || type == DataType::kDomain) {
+    return read(ref, 0, destination, ref.size());
+  }
+  // A string goes on the wire as it is stored: no byte order, no node-id.
+  const size_t size = ref.size();
+  const uint8_t* source =
+      ref.inRom() ? static_cast<const uint8_t*>(definition_->constants) : values_;
+  copyBytes(destination, source + ref.offset(), size);
+  if (type != DataType::kVisibleString) {
+    return size;
+  }
+  const auto* end = static_cast<const uint8_t*>(__builtin_memchr(destination, 0, size));
+  return end != nullptr ? static_cast<size_t>(end - destination) : size;
+}
+
 AbortCode ObjectDictionary::check(const EntryRef& ref, const uint8_t* source,
                                   size_t length) const noexcept {
   if (ref.inRom()) {
