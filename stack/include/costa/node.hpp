@@ -237,6 +237,11 @@ class Node {
  private:
   Microseconds runDue() noexcept;
   void buildRoutes() noexcept;
+  /// onFrame() for an 8-byte request to the SDO server, while its CAN-ID is
+  /// FrameRouter::fastId().
+  [[gnu::noinline]] void onSdoRequest(const CanFrame& frame, Microseconds now) noexcept;
+  /// onFrame() for every other frame: the table's route.
+  [[gnu::noinline]] void routeFrame(const CanFrame& frame, Microseconds now) noexcept;
   COSTA_HOT_INLINE bool route(const RouteEntry& entry, const CanFrame& frame) noexcept;
   /// The routes after `entry` of a CAN-ID with several (a SYNC that is also an RPDO, ...).
   bool routeFurther(const RouteEntry* entry, const CanFrame& frame) noexcept;
