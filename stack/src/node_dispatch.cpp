@@ -37,8 +37,11 @@ void Node::buildRoutes() noexcept {
                   static_cast<uint8_t>(i));
     }
   }
-  // The SDO server's requests skip the lookup (onFrame), unless another route shares them.
-  router_.setFastId(sdoRequests, Route::kSdo);
+  // The SDO server's requests skip the lookup (onFrame), unless another route shares them;
+  // built for size, every frame takes the table.
+  if (kExpandFastPaths) {
+    router_.setFastId(sdoRequests, Route::kSdo);
+  }
 }
 
 size_t Node::receiveFilters(CanIdFilter* filters, size_t capacity) noexcept {
@@ -108,9 +111,11 @@ COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame
 void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
   // An 8-byte request to the SDO server goes there at once: a transfer is a burst of them
   // (every segment one). A table that is stale, or routes their CAN-ID elsewhere too, has no
-  // fast CAN-ID; shorter requests, which the server may refuse, take the table. Both ways are
-  // calls of their own, so that these tests are all a frame pays before.
-  if (frame.id == router_.fastId() && frame.dlc == 8U && !frame.rtr && !frame.extended) {
+  // fast CAN-ID; shorter requests, which the server may refuse, take the table (and, built for
+  // size, every frame). Both ways are calls of their own, so that these tests are all a frame
+  // pays before.
+  if (kExpandFastPaths && frame.id == router_.fastId() && frame.dlc == 8U && !frame.rtr &&
+      !frame.extended) {
     onSdoRequest(frame, now);
   } else {
     routeFrame(frame, now);

@@ -106,31 +106,45 @@ bool SdoServer::isClientAbort(const uint8_t* request) const noexcept {
                                          : (request[0] >> 5U) == kCcsAbort;
 }
 
-void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexcept {
+bool SdoServer::locateDownload(const uint8_t* request) noexcept {
   index_ = loadU16(request + 1);
   subIndex_ = request[3];
   const AbortCode located = access_.locateForWrite(index_, subIndex_, &ref_);
   if (located != AbortCode::kNone) {
     sendAbort(index_, subIndex_, located);
+    return false;
+  }
+  return true;
+}
+
+void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexcept {
+  if ((request[0] & 0x02U) == 0U) {
+    initiateSegmentedDownload(request, now);
     return;
   }
-  const bool expedited = (request[0] & 0x02U) != 0U;
+  if (!locateDownload(request)) {
+    return;
+  }
+  // Expedited: the value is in bytes 4..7; s = 1 gives its length, else the entry does.
+  const size_t length = (request[0] & 0x01U) != 0U ? 4U - ((request[0] >> 2U) & 0x03U)
+                                                   : unspecifiedExpeditedLength(ref_, request + 4);
+  const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
+  if (written != AbortCode::kNone) {
+    finishExpedited(request, written);
+    return;
+  }
+  CanFrame response;
+  channel_.address(response);
+  copyBytes(response.data, request, 4);  // the multiplexer as asked
+  response.data[0] = kScsInitiateDownloadResponse;
+  channel_.send(response);
+}
+
+void SdoServer::initiateSegmentedDownload(const uint8_t* request, Microseconds now) noexcept {
+  if (!locateDownload(request)) {
+    return;
+  }
   const bool sizeIndicated = (request[0] & 0x01U) != 0U;
-  if (expedited) {
-    const size_t length = sizeIndicated ? 4U - ((request[0] >> 2U) & 0x03U)
-                                        : unspecifiedExpeditedLength(ref_, request + 4);
-    const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
-    if (written != AbortCode::kNone) {
-      finishExpedited(request, written);
-      return;
-    }
-    CanFrame response;
-    channel_.address(response);
-    copyBytes(response.data, request, 4);  // the multiplexer as asked
-    response.data[0] = kScsInitiateDownloadResponse;
-    channel_.send(response);
-    return;
-  }
   if (!sizeIndicated && (request[0] & 0x0CU) != 0U && profile_.expeditedByCountAlone) {
     downloadByCountAlone(request);
     return;
@@ -191,17 +205,17 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
 void SdoServer::serve(const uint8_t* request, Microseconds now) noexcept {
   lastCall_ = now;
   const auto ccs = static_cast<uint8_t>(request[0] >> 5U);
-  // The frequent requests first: the next segment of an upload, a new expedited transfer. Each
-  // is a call of its own, so that this dispatch needs no stack frame: a segment does not pay
-  // for what an initiate needs.
-  if (state_ == State::kUploadSegments && ccs == kCcsUploadSegment) {
-    uploadSegment(request, now);
-  } else if (state_ != State::kIdle || (ccs != kCcsInitiateUpload && ccs != kCcsInitiateDownload)) {
-    onOtherRequest(request, ccs, now);
-  } else if (ccs == kCcsInitiateUpload) {
+  // The frequent requests first: a new transfer, the next segment of an upload. Each is a call
+  // of its own, so that this dispatch needs no stack frame: a segment does not pay for what an
+  // initiate needs.
+  if (state_ == State::kIdle && ccs == kCcsInitiateUpload) {
     initiateUpload(request, now);
-  } else {
+  } else if (state_ == State::kIdle && ccs == kCcsInitiateDownload) {
     initiateDownload(request, now);
+  } else if (state_ == State::kUploadSegments && ccs == kCcsUploadSegment) {
+    uploadSegment(request, now);
+  } else {
+    onOtherRequest(request, ccs, now);
   }
 }
 

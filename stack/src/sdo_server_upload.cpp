@@ -81,7 +81,8 @@ void SdoServer::answerUpload(const uint8_t* request, size_t size, Microseconds n
 }
 
 void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept {
-  if (((request[0] >> 4U) & 0x01U) != toggle_ || !reader_.padded()) {
+  // Built for size, every segment takes the one general path.
+  if (!kExpandFastPaths || ((request[0] >> 4U) & 0x01U) != toggle_ || !reader_.padded()) {
     uploadOtherSegment(request, now);
     return;
   }

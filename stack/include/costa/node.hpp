@@ -256,8 +256,8 @@ class Node {
     return whileError != 0U && emcy_.errorRegister() != 0U ? static_cast<NmtState>(whileError)
                                                            : nmt_.state();
   }
-  bool preOrOperational() const noexcept {
-    return nmt_.state() == NmtState::kPreOperational || nmt_.state() == NmtState::kOperational;
+  bool preOrOperational() const noexcept {  // operational first: the usual state
+    return nmt_.state() == NmtState::kOperational || nmt_.state() == NmtState::kPreOperational;
   }
 
   NodeSettings settings_;

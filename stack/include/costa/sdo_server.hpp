@@ -95,6 +95,14 @@ class SdoServer {
   [[gnu::noinline]] bool onShortRequest(const CanFrame& frame, Microseconds now) noexcept;
   /// An initiate download request while no transfer runs.
   void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
+  /// Locates the entry of an initiate download request (index_, subIndex_, ref_); false after
+  /// the abort when it cannot be written.
+  COSTA_HOT_INLINE bool locateDownload(const uint8_t* request) noexcept;
+  /// initiateDownload() of a located entry, not expedited: a segmented download begins (or,
+  /// for some devices, an expedited one by its byte count alone). Out of line: the expedited
+  /// download keeps fewer registers.
+  [[gnu::noinline]] void initiateSegmentedDownload(const uint8_t* request,
+                                                   Microseconds now) noexcept;
   /// A byte count without e and s: an expedited download of that count, for a device that
   /// reads the count alone (SdoProfile::expeditedByCountAlone).
   [[gnu::noinline]] void downloadByCountAlone(const uint8_t* request) noexcept;
