@@ -121,5 +121,34 @@ TEST_F(FrameRouterTest, ClearForgetsEveryRoute) {
   EXPECT_EQ(routeOf(0x605), routeText(Route::kSdo));
 }
 
+TEST_F(FrameRouterTest, AFastCanIdHasOneRouteOfTheKindAskedForUntilTheTableChanges) {
+  EXPECT_EQ(router_.fastId(), FrameRouter::kNoFastId);
+  router_.clear();
+  EXPECT_TRUE(router_.add(0x605, Route::kSdo));
+  EXPECT_TRUE(router_.add(0x080, Route::kSync));
+  EXPECT_FALSE(router_.setFastId(0x606, Route::kSdo));  // no route
+  EXPECT_EQ(router_.fastId(), FrameRouter::kNoFastId);
+  EXPECT_FALSE(router_.setFastId(0x080, Route::kSdo));  // another route
+  EXPECT_EQ(router_.fastId(), FrameRouter::kNoFastId);
+  EXPECT_FALSE(router_.setFastId(0x1605, Route::kSdo));  // beyond 11 bits
+  EXPECT_TRUE(router_.setFastId(0x605, Route::kSdo));
+  EXPECT_EQ(router_.fastId(), 0x605U);
+  router_.invalidate();
+  EXPECT_EQ(router_.fastId(), FrameRouter::kNoFastId);
+  router_.clear();
+  EXPECT_TRUE(router_.add(0x605, Route::kSdo));
+  EXPECT_TRUE(router_.setFastId(0x605, Route::kSdo));
+  router_.clear();
+  EXPECT_EQ(router_.fastId(), FrameRouter::kNoFastId);
+}
+
+TEST_F(FrameRouterTest, ACanIdWithSeveralRoutesIsNeverFast) {
+  router_.clear();
+  EXPECT_TRUE(router_.add(0x605, Route::kSdo));
+  EXPECT_TRUE(router_.add(0x605, Route::kRpdo, 1));  // an RPDO on the SDO server's CAN-ID
+  EXPECT_FALSE(router_.setFastId(0x605, Route::kSdo));
+  EXPECT_EQ(router_.fastId(), FrameRouter::kNoFastId);
+}
+
 }  // namespace
 }  // namespace costa::test

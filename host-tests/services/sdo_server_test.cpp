@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <string>
+
 #include "costa/hook_registry.hpp"
 #include "costa/object_access.hpp"
 #include "costa/service_objects.hpp"
@@ -131,6 +134,38 @@ TEST_F(SdoServerTest, SegmentedUploadAlternatesTheToggleAndMarksTheLastSegment) 
                             response({0x11, 'e', 'r', 'v', 'i', 'c', 'e', 's'})}));
   EXPECT_FALSE(sdo_.busy());
   EXPECT_EQ(sdo_.nextDeadline(), kNever);
+}
+
+TEST_F(SdoServerTest, AnUploadSendsTheValueAsItWasAtTheInitiate) {
+  request({0x40, 0x03, 0x20, 0x00});
+  request({0x60});
+  std::strcpy(od_.values.x2003_device_label, "Changed midway");  // the application writes
+  request({0x70});
+  EXPECT_EQ(sent(), frames({response({0x41, 0x03, 0x20, 0x00, 14, 0, 0, 0}),
+                            response({0x00, 'C', 'o', 's', 't', 'a', ' ', 's'}),
+                            response({0x11, 'e', 'r', 'v', 'i', 'c', 'e', 's'})}));
+}
+
+TEST_F(SdoServerTest, ASnapshotThatFillsTheBufferIsUploadedTheSame) {
+  // 20 bytes hold the label (capacity 20) but not the 7 zeros that follow a snapshot when the
+  // buffer has room (26 bytes and more here): the last segment is then copied by its length.
+  const std::string text = "Costa services, too";  // 19 bytes: the last segment has 5
+  std::strcpy(od_.values.x2003_device_label, text.c_str());
+  for (const size_t size : {size_t{20}, size_t{26}, size_t{32}}) {
+    std::memset(buffer_, 0xEE, sizeof(buffer_));  // what no segment may carry
+    SdoServer server(access_, tx_, profile_, clock_, buffer_, size, kTimeout);
+    server.setNodeId(kNodeId);
+    EXPECT_TRUE(server.onRequest(frame8(0x605, {0x40, 0x03, 0x20, 0x00}), kStart));
+    for (const uint8_t segment : {uint8_t{0x60}, uint8_t{0x70}, uint8_t{0x60}}) {
+      EXPECT_TRUE(server.onRequest(frame8(0x605, {segment}), kStart)) << size;
+    }
+    EXPECT_EQ(sent(), frames({response({0x41, 0x03, 0x20, 0x00, 19, 0, 0, 0}),
+                              response({0x00, 'C', 'o', 's', 't', 'a', ' ', 's'}),
+                              response({0x10, 'e', 'r', 'v', 'i', 'c', 'e', 's'}),
+                              response({0x05, ',', ' ', 't', 'o', 'o', 0, 0})}))
+        << size;
+    EXPECT_FALSE(server.busy());
+  }
 }
 
 TEST_F(SdoServerTest, AWrongToggleBitAbortsTheTransfer) {

@@ -145,5 +145,19 @@ TEST_F(SdoSegmented, TimeoutRestartsWithEverySegment) {
   )");
 }
 
+TEST_F(SdoSegmented, TheTimeoutCountsFromTheLatestSegment) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 40 08 10 00 00 00 00 00
+    tx 581 [8] 41 08 10 00 0D 00 00 00
+    wait 900
+    rx 601 [8] 60 00 00 00 00 00 00 00
+    tx 581 [8] 00 43 6F 73 74 61 20 65
+    wait 999                             # 1899 ms after the initiate
+    silence
+    wait 1                               # 1000 ms after the segment
+    tx 581 [8] 80 08 10 00 00 00 04 05
+  )");
+}
+
 }  // namespace
 }  // namespace costa::test

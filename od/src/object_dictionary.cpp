@@ -115,12 +115,12 @@ AbortCode ObjectDictionary::find(uint16_t index, uint8_t subIndex, EntryRef* out
   if (object == nullptr) {
     return AbortCode::kNoObject;
   }
+  const SubEntry* const rows = object->rows;
   for (uint8_t i = 0; i < object->rowCount; ++i) {
-    const SubEntry& row = object->rows[i];
-    if (static_cast<uint8_t>(subIndex - row.subIndex) < row.count && subIndex >= row.subIndex) {
-      out->object = object;
-      out->row = &row;
-      out->sub = subIndex;
+    // One comparison: below the row's first sub-index, the difference is negative, which is a
+    // large unsigned number.
+    if (static_cast<unsigned>(subIndex - rows[i].subIndex) < rows[i].count) {
+      *out = EntryRef{object, &rows[i], subIndex};
       return AbortCode::kNone;
     }
   }
@@ -188,6 +188,23 @@ size_t ObjectDictionary::read(const EntryRef& ref, size_t offset, uint8_t* desti
     copyBytes(destination, source + offset, count);
   }
   return count;
+}
+
+size_t ObjectDictionary::readWhole(const EntryRef& ref, uint8_t* destination) const noexcept {
+  const DataType type = ref.type();
+  if (!kExpandFastPaths || isNumeric(type) || type == DataType::kDomain) {  // (for size: read())
+    return read(ref, 0, destination, ref.size());
+  }
+  // A string goes on the wire as it is stored: no byte order, no node-id.
+  const size_t size = ref.size();
+  const uint8_t* source =
+      ref.inRom() ? static_cast<const uint8_t*>(definition_->constants) : values_;
+  copyBytes(destination, source + ref.offset(), size);
+  if (type != DataType::kVisibleString) {
+    return size;
+  }
+  const auto* end = static_cast<const uint8_t*>(__builtin_memchr(destination, 0, size));
+  return end != nullptr ? static_cast<size_t>(end - destination) : size;
 }
 
 AbortCode ObjectDictionary::check(const EntryRef& ref, const uint8_t* source,

@@ -68,6 +68,7 @@ set(COSTA_STACK_CORE_SOURCES
   pdo_parameters.cpp
   rpdo_channel.cpp
   sdo_server.cpp
+  sdo_server_upload.cpp
   sdo_value_reader.cpp
   sdo_value_writer.cpp
   stored_parameters.cpp

@@ -5,6 +5,7 @@ namespace costa {
 void FrameRouter::clear() noexcept {
   count_ = 0;
   shared_ = false;
+  fastId_ = kNoFastId;
   for (uint8_t& first : first_) {
     first = 0;
   }

@@ -11,7 +11,11 @@ void HeartbeatProducer::restart(Microseconds now) noexcept {
 
 void HeartbeatProducer::restartWith(Microseconds now, uint32_t periodMs) noexcept {
   period_ = millisecondsToMicroseconds(periodMs);
-  next_ = period_ == 0U ? kNever : at(now, period_);
+  if (period_ == 0U) {
+    next_ = kNever;  // no heartbeat: nothing to schedule
+    return;
+  }
+  next_ = at(now, period_);
   clock_.schedule(next_);
 }
 

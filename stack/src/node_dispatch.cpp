@@ -15,7 +15,8 @@ void Node::buildRoutes() noexcept {
     return;  // LSS only until the node has a node-id
   }
   router_.add(cob::kNmt, Route::kNmt);
-  router_.add(static_cast<uint16_t>(cob::kSdoRxBase + id), Route::kSdo);
+  const auto sdoRequests = static_cast<uint16_t>(cob::kSdoRxBase + id);
+  router_.add(sdoRequests, Route::kSdo);
   sdoServers_.addRoutes(dictionary_, router_);
   router_.add(static_cast<uint16_t>(sync_.canId()), Route::kSync);
   if (time_.consumer()) {
@@ -35,6 +36,11 @@ void Node::buildRoutes() noexcept {
       router_.add(static_cast<uint16_t>(tpdo.canId()), Route::kTpdoRequest,
                   static_cast<uint8_t>(i));
     }
+  }
+  // The SDO server's requests skip the lookup (onFrame), unless another route shares them;
+  // built for size, every frame takes the table.
+  if (kExpandFastPaths) {
+    router_.setFastId(sdoRequests, Route::kSdo);
   }
 }
 
@@ -103,6 +109,29 @@ COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame
 }
 
 void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
+  // An 8-byte request to the SDO server goes there at once: a transfer is a burst of them
+  // (every segment one). A table that is stale, or routes their CAN-ID elsewhere too, has no
+  // fast CAN-ID; shorter requests, which the server may refuse, take the table (and, built for
+  // size, every frame). Both ways are calls of their own, so that these tests are all a frame
+  // pays before.
+  if (kExpandFastPaths && frame.id == router_.fastId() && frame.dlc == 8U && !frame.rtr &&
+      !frame.extended) {
+    onSdoRequest(frame, now);
+  } else {
+    routeFrame(frame, now);
+  }
+}
+
+void Node::onSdoRequest(const CanFrame& frame, Microseconds now) noexcept {
+  clock_.advance(now);
+  if (preOrOperational()) {
+    sdo_.serve(frame.data, clock_.now);
+  } else {
+    ++framesIgnored_;
+  }
+}
+
+void Node::routeFrame(const CanFrame& frame, Microseconds now) noexcept {
   clock_.advance(now);
   if (frame.dlc > 8U || frame.extended || frame.id > FrameRouter::kLargestId) {
     ++framesIgnored_;

@@ -18,7 +18,6 @@ constexpr uint8_t kCcsBlockDownload = 6;
 
 constexpr uint8_t kScsInitiateDownloadResponse = 0x60;
 constexpr uint8_t kScsDownloadSegmentResponse = 0x20;
-constexpr uint8_t kScsInitiateUploadResponse = 0x40;
 
 constexpr size_t kSegmentBytes = 7;
 
@@ -53,12 +52,6 @@ SdoServer::SdoServer(ObjectAccess& access, TransmitPath& tx, const SdoProfile& p
 
 void SdoServer::reset() noexcept {
   endTransfer(AbortCode::kGeneral);
-}
-
-void SdoServer::endTransfer(AbortCode reason) noexcept {
-  writer_.cancel(reason);
-  state_ = State::kIdle;
-  deadline_ = kNever;
 }
 
 bool SdoServer::valid() const noexcept {
@@ -113,32 +106,45 @@ bool SdoServer::isClientAbort(const uint8_t* request) const noexcept {
                                          : (request[0] >> 5U) == kCcsAbort;
 }
 
-COSTA_HOT_INLINE void SdoServer::initiateDownload(const uint8_t* request,
-                                                  Microseconds now) noexcept {
+bool SdoServer::locateDownload(const uint8_t* request) noexcept {
   index_ = loadU16(request + 1);
   subIndex_ = request[3];
   const AbortCode located = access_.locateForWrite(index_, subIndex_, &ref_);
   if (located != AbortCode::kNone) {
     sendAbort(index_, subIndex_, located);
+    return false;
+  }
+  return true;
+}
+
+void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexcept {
+  if ((request[0] & 0x02U) == 0U) {
+    initiateSegmentedDownload(request, now);
     return;
   }
-  const bool expedited = (request[0] & 0x02U) != 0U;
+  if (!locateDownload(request)) {
+    return;
+  }
+  // Expedited: the value is in bytes 4..7; s = 1 gives its length, else the entry does.
+  const size_t length = (request[0] & 0x01U) != 0U ? 4U - ((request[0] >> 2U) & 0x03U)
+                                                   : unspecifiedExpeditedLength(ref_, request + 4);
+  const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
+  if (written != AbortCode::kNone) {
+    finishExpedited(request, written);
+    return;
+  }
+  CanFrame response;
+  channel_.address(response);
+  copyBytes(response.data, request, 4);  // the multiplexer as asked
+  response.data[0] = kScsInitiateDownloadResponse;
+  channel_.send(response);
+}
+
+void SdoServer::initiateSegmentedDownload(const uint8_t* request, Microseconds now) noexcept {
+  if (!locateDownload(request)) {
+    return;
+  }
   const bool sizeIndicated = (request[0] & 0x01U) != 0U;
-  if (expedited) {
-    const size_t length = sizeIndicated ? 4U - ((request[0] >> 2U) & 0x03U)
-                                        : unspecifiedExpeditedLength(ref_, request + 4);
-    const AbortCode written = writer_.writeWhole(ref_, request + 4, length);
-    if (written != AbortCode::kNone) {
-      finishExpedited(request, written);
-      return;
-    }
-    CanFrame response;
-    channel_.address(response);
-    copyBytes(response.data, request, 4);  // the multiplexer as asked
-    response.data[0] = kScsInitiateDownloadResponse;
-    channel_.send(response);
-    return;
-  }
   if (!sizeIndicated && (request[0] & 0x0CU) != 0U && profile_.expeditedByCountAlone) {
     downloadByCountAlone(request);
     return;
@@ -175,42 +181,6 @@ void SdoServer::finishExpedited(const uint8_t* request, AbortCode verdict) noexc
   respond(response);
 }
 
-COSTA_HOT_INLINE void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcept {
-  index_ = loadU16(request + 1);
-  subIndex_ = request[3];
-  ReadRequest details;
-  copyBytes(details.requestData, request + 4, 4);
-  const AbortCode prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
-  if (prepared != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, prepared);
-    return;
-  }
-  if (od::isNumeric(ref_.type()) && ref_.size() <= 4U) {
-    answerExpedited(request);  // the usual read: straight from the dictionary into the answer
-    return;
-  }
-  size_t size = 0;
-  const AbortCode begun = reader_.begin(ref_, &size);
-  if (begun != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, begun);
-    return;
-  }
-  answerUpload(request, size, now);
-}
-
-COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcept {
-  const size_t size = ref_.size();
-  CanFrame response;
-  channel_.address(response);
-  copyBytes(response.data, request, 4);  // the multiplexer (index, sub-index) as asked
-  response.data[0] =
-      profile_.expeditedUpload == ExpeditedUploadFormat::kSizeIndicated
-          ? static_cast<uint8_t>(kScsInitiateUploadResponse | ((4U - size) << 2U) | 0x03U)
-          : static_cast<uint8_t>(kScsInitiateUploadResponse | 0x02U);
-  access_.dictionary().readNumber(ref_, response.data + 4);
-  channel_.send(response);
-}
-
 // NOLINTNEXTLINE(misc-no-recursion): calls onRequest() once with 8 bytes, which never come back
 bool SdoServer::onShortRequest(const CanFrame& frame, Microseconds now) noexcept {
   const uint8_t shortest = profile_.shortestRequest == 0U ? 1U : profile_.shortestRequest;
@@ -228,28 +198,31 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
   if (frame.dlc != 8U || frame.rtr) {
     return onShortRequest(frame, now);
   }
-  const uint8_t* request = frame.data;
-  lastCall_ = now;
-  const auto ccs = static_cast<uint8_t>(request[0] >> 5U);
-  // The frequent requests first: the next segment of an upload, a new expedited transfer.
-  if (state_ == State::kUploadSegments && ccs == kCcsUploadSegment) {
-    return uploadSegment(request, now);
-  }
-  if (state_ != State::kIdle || (ccs != kCcsInitiateUpload && ccs != kCcsInitiateDownload)) {
-    return onOtherRequest(request, ccs, now);
-  }
-  if (ccs == kCcsInitiateUpload) {
-    initiateUpload(request, now);
-  } else {
-    initiateDownload(request, now);
-  }
+  serve(frame.data, now);
   return true;
 }
 
-bool SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept {
+void SdoServer::serve(const uint8_t* request, Microseconds now) noexcept {
+  lastCall_ = now;
+  const auto ccs = static_cast<uint8_t>(request[0] >> 5U);
+  // The frequent requests first: a new transfer, the next segment of an upload. Each is a call
+  // of its own, so that this dispatch needs no stack frame: a segment does not pay for what an
+  // initiate needs.
+  if (state_ == State::kIdle && ccs == kCcsInitiateUpload) {
+    initiateUpload(request, now);
+  } else if (state_ == State::kIdle && ccs == kCcsInitiateDownload) {
+    initiateDownload(request, now);
+  } else if (state_ == State::kUploadSegments && ccs == kCcsUploadSegment) {
+    uploadSegment(request, now);
+  } else {
+    onOtherRequest(request, ccs, now);
+  }
+}
+
+void SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept {
   if (isClientAbort(request)) {
     endTransfer(static_cast<AbortCode>(loadU32(request + 4)));
-    return true;
+    return;
   }
   switch (state_) {
     case State::kIdle: initiate(request, ccs, now); break;
@@ -268,7 +241,6 @@ bool SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds
       }
       break;
   }
-  return true;
 }
 
 void SdoServer::initiate(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept {
@@ -301,7 +273,7 @@ void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexce
     abortTransfer(appended);
     return;
   }
-  armTimeout(now);
+  extendTimeout(now);
   if ((request[0] & 0x01U) != 0U) {
     finishDownload();
     return;
@@ -320,71 +292,6 @@ void SdoServer::finishDownload() noexcept {
   const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | (toggle_ << 4U))};
   respond(response);
   endTransfer(AbortCode::kNone);
-}
-
-// The initiate upload response, expedited or segmented, for a value the reader has begun.
-void SdoServer::answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept {
-  uint8_t response[8] = {0, request[1], request[2], subIndex_};
-  if (size >= 1U && size <= 4U) {
-    const AbortCode read = reader_.read(0, response + 4, size);
-    if (read != AbortCode::kNone) {
-      sendAbort(index_, subIndex_, read);
-      return;
-    }
-    response[0] =
-        profile_.expeditedUpload == ExpeditedUploadFormat::kSizeIndicated
-            ? static_cast<uint8_t>(kScsInitiateUploadResponse | ((4U - size) << 2U) | 0x03U)
-            : static_cast<uint8_t>(kScsInitiateUploadResponse | 0x02U);
-    respond(response);
-    return;
-  }
-  size_ = size;
-  done_ = 0;
-  toggle_ = 0;
-  state_ = State::kUploadSegments;
-  armTimeout(now);
-  response[0] = kScsInitiateUploadResponse | 0x01U;
-  storeU32(response + 4, static_cast<uint32_t>(size));
-  respond(response);
-}
-
-bool SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept {
-  const auto toggle = static_cast<uint8_t>((request[0] >> 4U) & 0x01U);
-  if (toggle != toggle_) {
-    abortTransfer(AbortCode::kToggleBit);
-    return true;
-  }
-  const size_t remaining = size_ - done_;
-  const bool last = remaining <= kSegmentBytes;
-  const size_t count = last ? remaining : kSegmentBytes;
-  CanFrame response;
-  channel_.address(response);
-  response.data[0] = static_cast<uint8_t>((static_cast<size_t>(toggle_) << 4U) |
-                                          ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U));
-  const uint8_t* snapshot = reader_.snapshot();
-  if (snapshot != nullptr && !last) {
-    copyBytes(response.data + 1, snapshot + done_, kSegmentBytes);  // a whole segment
-  } else {
-    const AbortCode read = reader_.read(done_, response.data + 1, count);
-    if (read != AbortCode::kNone) {
-      abortTransfer(read);
-      return true;
-    }
-  }
-  done_ += count;
-  channel_.send(response);
-  if (last) {
-    endTransfer(AbortCode::kNone);
-  } else {
-    toggle_ ^= 1U;
-    armTimeout(now);
-  }
-  return true;
-}
-
-void SdoServer::armTimeout(Microseconds now) noexcept {
-  deadline_ = at(now, timeout_);
-  clock_.schedule(deadline_);
 }
 
 void SdoServer::abortTransfer(AbortCode code) noexcept {

@@ -104,13 +104,6 @@ AbortCode SdoValueWriter::finish() noexcept {
   return written;
 }
 
-void SdoValueWriter::cancel(AbortCode reason) noexcept {
-  if (open_ && streamed_) {
-    access_.abortWriteStream(ref_, reason);
-  }
-  open_ = false;
-}
-
 size_t SdoValueWriter::room() const noexcept {
   if (indicated_ != kSizeNotIndicated) {
     return received_ < indicated_ ? indicated_ - received_ : 0U;

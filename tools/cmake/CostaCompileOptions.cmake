@@ -18,6 +18,12 @@ endif()
 add_library(costa_freestanding INTERFACE)
 target_compile_options(costa_freestanding INTERFACE
   -ffreestanding -fno-exceptions -fno-threadsafe-statics)
+# The core calls its ports and hooks through interfaces whose default bodies (no pure virtual
+# functions) are never the ones called; an optimising GCC would guess them at every call (a
+# compare and a branch before the call). Debug builds do not guess, and clang (clang-tidy
+# reads the Debug tree's compile commands) has no such option.
+target_compile_options(costa_freestanding INTERFACE
+  $<$<AND:$<CXX_COMPILER_ID:GNU>,$<NOT:$<CONFIG:Debug>>>:-fno-devirtualize-speculatively>)
 # The sanitizer build keeps RTTI in the core: UBSan's vptr check verifies the dynamic type of
 # every polymorphic object that host code calls, and needs the core's type information for that.
 # Every other build (host, firmware) proves that the core needs no RTTI.

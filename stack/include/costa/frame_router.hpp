@@ -72,9 +72,26 @@ class FrameRouter {
 
   /// Some CAN-ID has more than one route.
   bool shared() const noexcept { return shared_; }
+
+  /// A CAN-ID whose frames may skip the lookup: `id`'s one route is `route`, which the caller
+  /// takes on its own (Node::onFrame: the requests to its SDO server, which come in bursts of
+  /// segments). Holds until the table is cleared or invalidated. False, and no fast CAN-ID, when
+  /// `id` has no route, another one, or several.
+  bool setFastId(uint32_t id, Route route) noexcept {
+    const RouteEntry* entry = id <= kLargestId ? find(id) : nullptr;
+    const bool single = entry != nullptr && entry->route == route && nextOfSameId(entry) == nullptr;
+    fastId_ = single ? id : kNoFastId;
+    return single;
+  }
+  /// The CAN-ID of setFastId() while the table is fresh, else kNoFastId (no CAN-ID, 11 or 29
+  /// bits, has that value).
+  uint32_t fastId() const noexcept { return fastId_; }
+  static constexpr uint32_t kNoFastId = UINT32_MAX;
+
   /// The node's CAN-IDs changed: rebuild before the next lookup.
   void invalidate() noexcept {
     stale_ = true;
+    fastId_ = kNoFastId;
     ++changes_;
   }
   /// How many times the CAN-IDs changed (invalidate()): a port compares it with the value it
@@ -94,6 +111,7 @@ class FrameRouter {
   /// first_[c]: the index of the first route of function code c; first_[16] = count_.
   uint8_t first_[kFunctionCodes + 1U] = {};
   uint32_t changes_ = 0;
+  uint32_t fastId_ = kNoFastId;
   bool stale_ = true;
   bool shared_ = false;  ///< some CAN-ID has more than one route
 };

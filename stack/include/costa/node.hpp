@@ -237,6 +237,11 @@ class Node {
  private:
   Microseconds runDue() noexcept;
   void buildRoutes() noexcept;
+  /// onFrame() for an 8-byte request to the SDO server, while its CAN-ID is
+  /// FrameRouter::fastId().
+  [[gnu::noinline]] void onSdoRequest(const CanFrame& frame, Microseconds now) noexcept;
+  /// onFrame() for every other frame: the table's route.
+  [[gnu::noinline]] void routeFrame(const CanFrame& frame, Microseconds now) noexcept;
   COSTA_HOT_INLINE bool route(const RouteEntry& entry, const CanFrame& frame) noexcept;
   /// The routes after `entry` of a CAN-ID with several (a SYNC that is also an RPDO, ...).
   bool routeFurther(const RouteEntry* entry, const CanFrame& frame) noexcept;
@@ -251,8 +256,8 @@ class Node {
     return whileError != 0U && emcy_.errorRegister() != 0U ? static_cast<NmtState>(whileError)
                                                            : nmt_.state();
   }
-  bool preOrOperational() const noexcept {
-    return nmt_.state() == NmtState::kPreOperational || nmt_.state() == NmtState::kOperational;
+  bool preOrOperational() const noexcept {  // operational first: the usual state
+    return nmt_.state() == NmtState::kOperational || nmt_.state() == NmtState::kPreOperational;
   }
 
   NodeSettings settings_;

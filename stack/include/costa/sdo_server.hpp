@@ -42,6 +42,9 @@ class SdoServer {
   /// SdoProfile::shortestRequest bytes, whose missing bytes count as 0. O(log n) in the
   /// dictionary size plus the hook's cost.
   [[nodiscard]] bool onRequest(const CanFrame& frame, Microseconds now) noexcept;
+  /// onRequest() for a request of 8 bytes, not RTR, which the server always uses (the node's
+  /// way for its own server's requests, Node::onFrame).
+  void serve(const uint8_t* request, Microseconds now) noexcept;
 
   /// Aborts a transfer that has been silent longer than the timeout (0x05040000); queues
   /// further segments of a block upload sub-block as the transmit queue has room.
@@ -72,17 +75,34 @@ class SdoServer {
   };
 
   /// A request other than the frequent ones: aborts, download segments, block transfers, and
-  /// requests that do not fit the transfer's state. True.
-  bool onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
+  /// requests that do not fit the transfer's state.
+  void onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
   /// The deadline of the client's next request, from `now`; the node's clock is told.
-  void armTimeout(Microseconds now) noexcept;
+  void armTimeout(Microseconds now) noexcept {
+    deadline_ = at(now, timeout_);
+    clock_.schedule(deadline_);
+  }
+  /// armTimeout() within a transfer whose start armed it. `now` does not go back, so the
+  /// deadline moves only later; the clock's next time is no later than deadline_ from that
+  /// armTimeout() on (schedule() then, and every process() that reaches it sets it from
+  /// nextDeadline()), so it need not be told again.
+  void extendTimeout(Microseconds now) noexcept { deadline_ = at(now, timeout_); }
   /// A request while no transfer runs: starts one, or aborts.
   void initiate(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
   /// A request shorter than 8 bytes, or an RTR frame: served as 8 bytes, the missing ones 0,
   /// when the profile serves its length (SdoProfile::shortestRequest: onRequest() once more,
   /// with 8 bytes), else ignored (false).
   [[gnu::noinline]] bool onShortRequest(const CanFrame& frame, Microseconds now) noexcept;
-  COSTA_HOT_INLINE void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
+  /// An initiate download request while no transfer runs.
+  void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
+  /// Locates the entry of an initiate download request (index_, subIndex_, ref_); false after
+  /// the abort when it cannot be written.
+  COSTA_HOT_INLINE bool locateDownload(const uint8_t* request) noexcept;
+  /// initiateDownload() of a located entry, not expedited: a segmented download begins (or,
+  /// for some devices, an expedited one by its byte count alone). Out of line: the expedited
+  /// download keeps fewer registers.
+  [[gnu::noinline]] void initiateSegmentedDownload(const uint8_t* request,
+                                                   Microseconds now) noexcept;
   /// A byte count without e and s: an expedited download of that count, for a device that
   /// reads the count alone (SdoProfile::expeditedByCountAlone).
   [[gnu::noinline]] void downloadByCountAlone(const uint8_t* request) noexcept;
@@ -91,13 +111,17 @@ class SdoServer {
   /// the response or the abort.
   void finishExpedited(const uint8_t* request, AbortCode verdict) noexcept;
   void downloadSegment(const uint8_t* request, Microseconds now) noexcept;
-  COSTA_HOT_INLINE void initiateUpload(const uint8_t* request, Microseconds now) noexcept;
+  /// An initiate upload request while no transfer runs.
+  void initiateUpload(const uint8_t* request, Microseconds now) noexcept;
   void answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept;
   /// The expedited answer to an upload of a numeric value of up to 4 bytes.
   COSTA_HOT_INLINE void answerExpedited(const uint8_t* request) noexcept;
-  /// The next segment of an upload. True (the frame was used), so that callers can return its
-  /// result at once.
-  bool uploadSegment(const uint8_t* request, Microseconds now) noexcept;
+  /// The next segment of an upload. Itself only the usual segment: seven bytes of a snapshot
+  /// followed by zeros (SdoValueReader::padded()).
+  void uploadSegment(const uint8_t* request, Microseconds now) noexcept;
+  /// uploadSegment() for the others: a streamed value's segment (or one of a value that fills
+  /// the buffer), a wrong toggle bit.
+  [[gnu::noinline]] void uploadOtherSegment(const uint8_t* request, Microseconds now) noexcept;
   void finishDownload() noexcept;
   bool isClientAbort(const uint8_t* request) const noexcept;
   // Block transfers (sdo_server_block.cpp, compiled only with features::kSdoBlockTransfer).
@@ -113,7 +137,13 @@ class SdoServer {
 
   void sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept;
   void abortTransfer(AbortCode code) noexcept;
-  void endTransfer(AbortCode reason) noexcept;
+  /// The transfer is over (`reason` kNone: completed): idle, no deadline; an open streamed
+  /// download is told `reason`.
+  void endTransfer(AbortCode reason) noexcept {
+    writer_.cancel(reason);
+    state_ = State::kIdle;
+    deadline_ = kNever;
+  }
   void respond(const uint8_t (&data)[8]) noexcept { channel_.send(data); }
 
   ObjectAccess& access_;

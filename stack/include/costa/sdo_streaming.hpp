@@ -11,7 +11,7 @@ namespace costa {
 /// moved piecewise through ObjectHook::readStream() and writeStream(); every other value is
 /// copied whole through the buffer, so that a download is written only when complete.
 inline bool sdoStreams(const od::EntryRef& ref, size_t bufferSize) noexcept {
-  return ref.type() == od::DataType::kDomain || ref.size() > bufferSize;
+  return ref.size() > bufferSize || ref.type() == od::DataType::kDomain;
 }
 
 }  // namespace costa

@@ -6,6 +6,8 @@
 #include <stdint.h>
 
 #include "costa/object_access.hpp"
+#include "costa/od/bytes.hpp"
+#include "costa/sdo_streaming.hpp"
 
 namespace costa {
 
@@ -17,23 +19,55 @@ class SdoValueReader {
       : access_(access), buffer_(buffer), bufferSize_(bufferSize) {}
 
   /// Starts an upload of `ref` (already prepared with ObjectAccess::prepareRead): copies a
-  /// buffered value into the buffer, or asks the streaming hook for the value's size. Sets
-  /// `*size` to the bytes to transfer.
-  AbortCode begin(const od::EntryRef& ref, size_t* size) noexcept;
+  /// buffered value into the buffer (the snapshot the whole transfer sends), or asks the
+  /// streaming hook for the value's size. Sets `*size` to the bytes to transfer.
+  AbortCode begin(const od::EntryRef& ref, size_t* size) noexcept {
+    streamed_ = sdoStreams(ref, bufferSize_);
+    if (streamed_) {
+      ref_ = ref;  // the hook is asked for every piece
+      padded_ = false;
+      return beginStreamed(size);
+    }
+    size_ = access_.dictionary().readWhole(ref, buffer_);
+    padded_ = size_ + kZeroTail <= bufferSize_;
+    if (padded_) {
+      fillBytes(buffer_ + size_, 0, kZeroTail);
+    }
+    *size = size_;
+    return AbortCode::kNone;
+  }
 
-  /// Copies bytes [offset, offset + count) of the value: the hook's refusal, or kNoData when a
-  /// streamed value ends before `offset + count` (it shrank during the transfer).
-  AbortCode read(size_t offset, uint8_t* destination, size_t count) noexcept;
+  /// Copies bytes [offset, offset + count) of the value: the hook's refusal, or kNoData when the
+  /// value ends before `offset + count` (a streamed value that shrank during the transfer).
+  AbortCode read(size_t offset, uint8_t* destination, size_t count) noexcept {
+    if (streamed_) {
+      return readStreamed(offset, destination, count);
+    }
+    if (offset + count > size_) {
+      return AbortCode::kNoData;
+    }
+    copyBytes(destination, buffer_ + offset, count);
+    return AbortCode::kNone;
+  }
 
-  /// The snapshot of a value that is not streamed (its bytes in the SDO buffer), else null.
-  const uint8_t* snapshot() const noexcept { return streamed_ ? nullptr : buffer_; }
+  /// Zeros that follow a snapshot when the buffer has room for them: whoever sends it in
+  /// segments of up to 7 bytes may copy 7 bytes for each, the last one too.
+  static constexpr size_t kZeroTail = 7;
+  /// The value is not streamed and kZeroTail zeros follow its snapshot.
+  bool padded() const noexcept { return padded_; }
+  /// The snapshot of a value that is not streamed: its bytes in the SDO buffer.
+  const uint8_t* snapshot() const noexcept { return buffer_; }
 
  private:
+  AbortCode beginStreamed(size_t* size) noexcept;
+  AbortCode readStreamed(size_t offset, uint8_t* destination, size_t count) noexcept;
+
   ObjectAccess& access_;
   uint8_t* buffer_;
   size_t bufferSize_;
   od::EntryRef ref_;
   bool streamed_ = false;
+  bool padded_ = false;  ///< kZeroTail zeros follow the snapshot
   size_t size_ = 0;
 };
 

@@ -44,8 +44,14 @@ class SdoValueWriter {
   /// after a failure the caller cancels it.
   AbortCode finish() noexcept;
 
-  /// Ends an unfinished download: a streaming hook is told to discard. No-op when none is open.
-  void cancel(AbortCode reason) noexcept;
+  /// Ends an unfinished download: a streaming hook is told to discard. No-op when none is open
+  /// (the usual case: every transfer's end cancels, the end of an upload too).
+  void cancel(AbortCode reason) noexcept {
+    if (open_ && streamed_) {
+      access_.abortWriteStream(ref_, reason);
+    }
+    open_ = false;
+  }
 
   /// Bytes received so far.
   size_t received() const noexcept { return received_; }

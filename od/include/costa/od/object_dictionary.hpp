@@ -52,6 +52,11 @@ class ObjectDictionary {
   size_t read(const EntryRef& ref, size_t offset, uint8_t* destination,
               size_t capacity) const noexcept;
 
+  /// The whole value's wire representation into `destination`, which has room for ref.size()
+  /// bytes: read(ref, 0, destination, ref.size()), returning valueSize(). A string is one copy
+  /// of all its bytes (those past a VISIBLE_STRING's end too) and one search for its end.
+  size_t readWhole(const EntryRef& ref, uint8_t* destination) const noexcept;
+
   /// The wire representation of a numeric value (ref.size() bytes) into `destination`. The
   /// usual case (a value of 1, 2 or 4 bytes in RAM on a little-endian CPU that loads at any
   /// address, not built for size) is one load and store.
