@@ -51,8 +51,8 @@ void SafetyService::addRoutes(FrameRouter& router) const noexcept {
     if (dictionary.readUnsigned(index, 1, 0) != srdo::kReceive) {
       continue;
     }
-    const auto normal = static_cast<uint32_t>(dictionary.readUnsigned(index, 5, 0));
-    const auto inverted = static_cast<uint32_t>(dictionary.readUnsigned(index, 6, 0));
+    const auto normal = dictionary.readUnsigned32(index, 5, 0);
+    const auto inverted = dictionary.readUnsigned32(index, 6, 0);
     if (normal <= FrameRouter::kLargestId && inverted <= FrameRouter::kLargestId) {
       (void)router.add(static_cast<uint16_t>(normal), Route::kSrdo,
                        static_cast<uint8_t>(2U * slot));
@@ -153,7 +153,7 @@ void SafetyService::transmit(const SrdoChannel& channel) noexcept {
   normal.dlc = c.length;
   size_t offset = 0;
   for (uint8_t sub = 1; sub < c.mappedCount; sub = static_cast<uint8_t>(sub + 2U)) {
-    const auto entry = static_cast<uint32_t>(dictionary.readUnsigned(mapping, sub, 0));
+    const auto entry = dictionary.readUnsigned32(mapping, sub, 0);
     const od::EntryRef ref =
         dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U));
     if (ref.valid() && offset + ref.size() <= sizeof(normal.data)) {
@@ -175,7 +175,7 @@ void SafetyService::deliver(const SrdoChannel& channel) noexcept {
   const auto mapping = static_cast<uint16_t>(srdo::kFirstMapping + c.number - 1U);
   size_t offset = 0;
   for (uint8_t sub = 1; sub < c.mappedCount; sub = static_cast<uint8_t>(sub + 2U)) {
-    const auto entry = static_cast<uint32_t>(dictionary.readUnsigned(mapping, sub, 0));
+    const auto entry = dictionary.readUnsigned32(mapping, sub, 0);
     const od::EntryRef ref =
         dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U));
     if (ref.valid() && offset + ref.size() <= c.length) {

@@ -24,7 +24,7 @@ TimeOfDay later(const TimeOfDay& time, uint32_t elapsed) noexcept {
 
 void TimeService::configure() noexcept {
   // Without the object the default 0x100 has neither bit: no TIME.
-  const auto cob = static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, 0x100));
+  const auto cob = dictionary_.readUnsigned32(kCobIdIndex, 0, 0x100);
   canId_ = static_cast<uint16_t>(cob & 0x7FFU);
   consumer_ = (cob & kConsume) != 0U;
   producer_ = (cob & kProduce) != 0U;
