@@ -137,7 +137,9 @@ class AbsentHeartbeatConsumer final : public AbsentService {
 /// LSS compiled out: nothing on 0x7E5 is answered; the node-id and bit timing are the node's.
 class AbsentLssSlave {
  public:
-  AbsentLssSlave(TransmitPath& tx, LssSlaveHost& host) noexcept {
+  /// `host`: the node's LssBridgeChoice (itself compiled out), or any LssSlaveHost.
+  template <typename Host>
+  AbsentLssSlave(TransmitPath& tx, Host& host) noexcept {
     (void)tx;
     (void)host;
   }
