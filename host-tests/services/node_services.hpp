@@ -63,8 +63,8 @@ struct NodeServices {
             settings.nodeId),
         services(ServiceObjects::Hooks{&emcy, &sync, &errorControl.guardingObjects(),
                                        &stored.commands(), &errorControl.consumerObjects(),
-                                       &heartbeat, &time, &emcyConsumer, nullptr, &pdos,
-                                       &sdoServers}) {
+                                       &heartbeat, serviceHook(time), serviceHook(emcyConsumer),
+                                       nullptr, &pdos, serviceHook(sdoServers)}) {
     access.setObserver(stored.autoSave());
     pdos.bind();
     EXPECT_TRUE(listeners.add(listener));

@@ -295,6 +295,12 @@ uint64_t ObjectDictionary::readUnsigned(uint16_t index, uint8_t subIndex,
   return ref.valid() ? readUnsigned(ref) : fallback;
 }
 
+uint32_t ObjectDictionary::readUnsigned32(uint16_t index, uint8_t subIndex,
+                                          uint32_t fallback) const noexcept {
+  const EntryRef ref = find(index, subIndex);
+  return ref.valid() ? static_cast<uint32_t>(readUnsigned(ref)) : fallback;
+}
+
 bool ObjectDictionary::storeUnsigned(uint16_t index, uint8_t subIndex, uint64_t value) noexcept {
   const EntryRef ref = find(index, subIndex);
   if (!ref.valid()) {

@@ -19,9 +19,9 @@ void EmcyConsumer::addRoutes(const od::ObjectDictionary& dictionary, FrameRouter
   if (object == nullptr) {
     return;
   }
-  const auto count = static_cast<uint8_t>(dictionary.readUnsigned(kIndex, 0, 0));
+  const auto count = static_cast<uint8_t>(dictionary.readUnsigned32(kIndex, 0, 0));
   for (uint8_t sub = 1; sub != 0U && sub <= count; ++sub) {
-    const auto value = static_cast<uint32_t>(dictionary.readUnsigned(kIndex, sub, kNotValid));
+    const auto value = dictionary.readUnsigned32(kIndex, sub, kNotValid);
     if ((value & (kNotValid | kExtended | kReserved)) == 0U) {
       (void)router.add(static_cast<uint16_t>(value & 0x7FFU), Route::kEmcy, sub);
     }

@@ -112,7 +112,7 @@ void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
     return;
   }
   const auto capacity = static_cast<uint8_t>(od::entryCount(*history) - 1U);
-  auto count = static_cast<uint8_t>(dictionary_.readUnsigned(kErrorHistoryIndex, 0, 0));
+  auto count = static_cast<uint8_t>(dictionary_.readUnsigned32(kErrorHistoryIndex, 0, 0));
   if (count < capacity) {
     ++count;
   }
@@ -158,7 +158,7 @@ void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
 }
 
 uint32_t EmcyProducer::cobId() const noexcept {
-  return static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, cob::kEmcyBase + nodeId_));
+  return dictionary_.readUnsigned32(kCobIdIndex, 0, cob::kEmcyBase + nodeId_);
 }
 
 void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) noexcept {
@@ -174,8 +174,7 @@ void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) n
     pendingCount_ = 0;  // EMCY not valid: nothing is produced
     return;
   }
-  const auto inhibit =
-      static_cast<uint32_t>(dictionary_.readUnsigned(kInhibitIndex, 0, 0)) * kHundredMicroseconds;
+  const auto inhibit = dictionary_.readUnsigned32(kInhibitIndex, 0, 0) * kHundredMicroseconds;
   while (pendingCount_ != 0U && nextAllowed_ == kNever) {
     CanFrame frame;
     frame.id = cob & 0x7FFU;

@@ -86,7 +86,7 @@ void ErrorControl::onHeartbeatEvent(const HeartbeatConsumer::Event& event) noexc
 
 void ErrorControl::onCommunicationError() noexcept {
   applyErrorBehaviour(static_cast<uint8_t>(
-      dictionary_.readUnsigned(kErrorBehaviourIndex, 1, profile_.errorBehaviourWithoutObject)));
+      dictionary_.readUnsigned32(kErrorBehaviourIndex, 1, profile_.errorBehaviourWithoutObject)));
 }
 
 void ErrorControl::applyErrorBehaviour(uint8_t behaviour) noexcept {

@@ -16,8 +16,7 @@ void HeartbeatConsumer::configure(bool reset) noexcept {
     return;
   }
   for (unsigned i = 0; i + 1U < od::entryCount(*object) && count_ < capacity_; ++i) {
-    const auto value =
-        static_cast<uint32_t>(dictionary_.readUnsigned(kIndex, static_cast<uint8_t>(i + 1U), 0));
+    const auto value = dictionary_.readUnsigned32(kIndex, static_cast<uint8_t>(i + 1U), 0);
     const auto nodeId = static_cast<uint8_t>(value >> 16U);
     const Microseconds time = millisecondsToMicroseconds(value & 0xFFFFU);
     HeartbeatMonitor& monitor = monitors_[count_++];
@@ -89,8 +88,7 @@ AbortCode HeartbeatConsumer::write(od::ObjectDictionary& dictionary, const od::E
         if (sub == ref.subIndex()) {
           continue;
         }
-        const auto other =
-            static_cast<uint32_t>(dictionary.readUnsigned(kIndex, static_cast<uint8_t>(sub), 0));
+        const auto other = dictionary.readUnsigned32(kIndex, static_cast<uint8_t>(sub), 0);
         if ((other >> 16U) == nodeId && (other & 0xFFFFU) != 0U) {
           return AbortCode::kParameterIncompatible;
         }

@@ -6,7 +6,7 @@
 namespace costa {
 
 void HeartbeatProducer::restart(Microseconds now) noexcept {
-  restartWith(now, static_cast<uint32_t>(dictionary_.readUnsigned(kIndex, 0, 0)));
+  restartWith(now, dictionary_.readUnsigned32(kIndex, 0, 0));
 }
 
 void HeartbeatProducer::restartWith(Microseconds now, uint32_t periodMs) noexcept {

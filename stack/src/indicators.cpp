@@ -118,8 +118,8 @@ Microseconds Indicators::process(Microseconds now) noexcept {
 void Indicators::onSync(uint8_t counter) noexcept {
   (void)counter;
   const od::ObjectDictionary& dictionary = node_.dictionary();
-  const auto cob = static_cast<uint32_t>(dictionary.readUnsigned(0x1005, 0, 0));
-  const auto period = static_cast<uint32_t>(dictionary.readUnsigned(0x1006, 0, 0));
+  const auto cob = dictionary.readUnsigned32(0x1005, 0, 0);
+  const auto period = dictionary.readUnsigned32(0x1006, 0, 0);
   const bool producer = (cob & 0x40000000U) != 0U;
   syncError_ = false;
   syncDeadline_ = producer || period == 0U ? kNever : at(node_.now(), syncTimeout(period));

@@ -46,10 +46,10 @@ void NmtStateMachine::resetNode() noexcept {
 LssIdentity NmtStateMachine::identity() const noexcept {
   const od::ObjectDictionary& dictionary = services_.dictionary;
   LssIdentity id;
-  id.vendorId = static_cast<uint32_t>(dictionary.readUnsigned(0x1018, 1, 0));
-  id.productCode = static_cast<uint32_t>(dictionary.readUnsigned(0x1018, 2, 0));
-  id.revisionNumber = static_cast<uint32_t>(dictionary.readUnsigned(0x1018, 3, 0));
-  id.serialNumber = static_cast<uint32_t>(dictionary.readUnsigned(0x1018, 4, 0));
+  id.vendorId = dictionary.readUnsigned32(0x1018, 1, 0);
+  id.productCode = dictionary.readUnsigned32(0x1018, 2, 0);
+  id.revisionNumber = dictionary.readUnsigned32(0x1018, 3, 0);
+  id.serialNumber = dictionary.readUnsigned32(0x1018, 4, 0);
   return id;
 }
 

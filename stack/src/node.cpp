@@ -39,8 +39,8 @@ Node::Node(const od::Definition& definition, const NodeMemory& memory, CanTransm
            settings_.nodeId),
       services_(ServiceObjects::Hooks{&emcy_, &sync_, &errorControl_.guardingObjects(),
                                       &stored_.commands(), &errorControl_.consumerObjects(),
-                                      &heartbeat_, &time_, &emcyConsumer_, &safety_, &pdos_,
-                                      &sdoServers_}) {
+                                      &heartbeat_, serviceHook(time_), serviceHook(emcyConsumer_),
+                                      serviceHook(safety_), &pdos_, serviceHook(sdoServers_)}) {
   access_.setObserver(stored_.autoSave());
   pdos_.bind();
 }

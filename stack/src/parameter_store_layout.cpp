@@ -9,8 +9,16 @@ bool exceeds32Bits(uint64_t value) noexcept {
   return (value >> 32U) != 0U;
 }
 
-uint64_t roundUp(uint64_t value, uint64_t alignment) noexcept {
-  return (value + alignment - 1U) / alignment * alignment;
+/// The bytes of a slot: an image header and `capacity` bytes of payload, rounded up to a
+/// multiple of `alignment` (both below 2^32). Divides 32 bits only (no 64-bit division on small
+/// cores); a header and payload beyond 32 bits are returned as they are, too large anyway.
+uint64_t slotBytes(uint64_t capacity, uint64_t alignment) noexcept {
+  const uint64_t value = kImageHeaderSize + capacity;
+  if (exceeds32Bits(value)) {
+    return value;
+  }
+  const uint32_t rest = static_cast<uint32_t>(value) % static_cast<uint32_t>(alignment);
+  return rest == 0U ? value : value + (alignment - rest);
 }
 
 /// A stored group and the bytes its RAM values take.
@@ -120,8 +128,7 @@ size_t ParameterStore::computeLayout(Region* regions, size_t* count) const noexc
     if (*count == kMaxRegions || exceeds32Bits(capacity) || exceeds32Bits(slotAlignment_)) {
       return false;
     }
-    const uint64_t slotSize = roundUp(kImageHeaderSize + static_cast<uint64_t>(capacity),
-                                      static_cast<uint64_t>(slotAlignment_));
+    const uint64_t slotSize = slotBytes(capacity, slotAlignment_);
     if (exceeds32Bits(offset + 2U * slotSize)) {
       return false;
     }

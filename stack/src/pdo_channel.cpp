@@ -28,8 +28,7 @@ size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdo
       count = PdoMap::kMaxEntries;
     }
     for (size_t i = 0; i < count; ++i) {
-      values[i] = static_cast<uint32_t>(
-          dictionary.readUnsigned(mappingIndex, static_cast<uint8_t>(i + 1U), 0));
+      values[i] = dictionary.readUnsigned32(mappingIndex, static_cast<uint8_t>(i + 1U), 0);
     }
     return count;
   }

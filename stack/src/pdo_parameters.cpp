@@ -79,8 +79,7 @@ AbortCode PdoEngine::checkMappingWrite(bool receive, bool pdoValid, const od::En
   }
   uint32_t values[PdoMap::kMaxEntries] = {};
   for (uint8_t i = 0; i < count; ++i) {
-    values[i] =
-        static_cast<uint32_t>(dictionary.readUnsigned(index, static_cast<uint8_t>(i + 1U), 0));
+    values[i] = dictionary.readUnsigned32(index, static_cast<uint8_t>(i + 1U), 0);
     if (values[i] == 0U) {
       return AbortCode::kParameterIncompatible;  // an enabled entry must map something
     }

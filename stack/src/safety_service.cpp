@@ -13,7 +13,7 @@ constexpr uint8_t kCommunicationErrorBit = 0x10;
 /// The entry that sub-index `sub` of SRDO mapping object `mapping` names (not valid: none).
 od::EntryRef mappedEntry(const od::ObjectDictionary& dictionary, uint16_t mapping,
                          uint8_t sub) noexcept {
-  const auto entry = static_cast<uint32_t>(dictionary.readUnsigned(mapping, sub, 0));
+  const auto entry = dictionary.readUnsigned32(mapping, sub, 0);
   return dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U));
 }
 
@@ -21,7 +21,8 @@ od::EntryRef mappedEntry(const od::ObjectDictionary& dictionary, uint16_t mappin
 /// inverted copy), rather than the normal entry again (the stack inverts it).
 bool ownInvertedEntry(const od::ObjectDictionary& dictionary, uint16_t mapping,
                       uint8_t sub) noexcept {
-  return dictionary.readUnsigned(mapping, sub, 0) != dictionary.readUnsigned(mapping, sub + 1U, 0);
+  return dictionary.readUnsigned32(mapping, sub, 0) !=
+         dictionary.readUnsigned32(mapping, sub + 1U, 0);
 }
 
 /// EMCY error code of a failure: CiA 301's closest, CiA 304 names none (docs/manual-errata.md,
@@ -65,8 +66,8 @@ void SafetyService::addRoutes(FrameRouter& router) const noexcept {
     if (dictionary.readUnsigned(index, 1, 0) != srdo::kReceive) {
       continue;
     }
-    const auto normal = static_cast<uint32_t>(dictionary.readUnsigned(index, 5, 0));
-    const auto inverted = static_cast<uint32_t>(dictionary.readUnsigned(index, 6, 0));
+    const auto normal = dictionary.readUnsigned32(index, 5, 0);
+    const auto inverted = dictionary.readUnsigned32(index, 6, 0);
     if (normal <= FrameRouter::kLargestId && inverted <= FrameRouter::kLargestId) {
       (void)router.add(static_cast<uint16_t>(normal), Route::kSrdo,
                        static_cast<uint8_t>(2U * slot));

@@ -53,8 +53,8 @@ AbortCode checkSrdoMapping(const od::ObjectDictionary& dictionary, uint16_t mapp
   }
   size_t bytes = 0;
   for (uint8_t sub = 1; sub < count; sub = static_cast<uint8_t>(sub + 2U)) {
-    const auto normal = static_cast<uint32_t>(dictionary.readUnsigned(mappingIndex, sub, 0));
-    const auto inverted = static_cast<uint32_t>(dictionary.readUnsigned(mappingIndex, sub + 1U, 0));
+    const auto normal = dictionary.readUnsigned32(mappingIndex, sub, 0);
+    const auto inverted = dictionary.readUnsigned32(mappingIndex, sub + 1U, 0);
     size_t normalSize = 0;
     size_t invertedSize = 0;
     AbortCode verdict = checkSrdoEntry(dictionary, normal, direction, &normalSize);
@@ -83,15 +83,15 @@ SrdoCheck readSrdoConfiguration(const od::ObjectDictionary& dictionary, uint8_t 
   SrdoConfiguration& c = *out;
   c = SrdoConfiguration{};
   c.number = number;
-  c.direction = static_cast<uint8_t>(dictionary.readUnsigned(communication, 1, 0));
-  c.cycleMs = static_cast<uint16_t>(dictionary.readUnsigned(communication, 2, 0));
-  c.validationMs = static_cast<uint8_t>(dictionary.readUnsigned(communication, 3, 0));
-  const auto type = static_cast<uint8_t>(dictionary.readUnsigned(communication, 4, 0));
-  const auto normalId = static_cast<uint32_t>(dictionary.readUnsigned(communication, 5, 0));
-  const auto invertedId = static_cast<uint32_t>(dictionary.readUnsigned(communication, 6, 0));
+  c.direction = static_cast<uint8_t>(dictionary.readUnsigned32(communication, 1, 0));
+  c.cycleMs = static_cast<uint16_t>(dictionary.readUnsigned32(communication, 2, 0));
+  c.validationMs = static_cast<uint8_t>(dictionary.readUnsigned32(communication, 3, 0));
+  const auto type = static_cast<uint8_t>(dictionary.readUnsigned32(communication, 4, 0));
+  const auto normalId = dictionary.readUnsigned32(communication, 5, 0);
+  const auto invertedId = dictionary.readUnsigned32(communication, 6, 0);
   c.normalId = static_cast<uint16_t>(normalId);
   c.invertedId = static_cast<uint16_t>(invertedId);
-  c.mappedCount = static_cast<uint8_t>(dictionary.readUnsigned(mapping, 0, 0));
+  c.mappedCount = static_cast<uint8_t>(dictionary.readUnsigned32(mapping, 0, 0));
   Crc16 crc;
   crc.update(c.direction);
   feed(crc, c.cycleMs, 2);
@@ -101,7 +101,7 @@ SrdoCheck readSrdoConfiguration(const od::ObjectDictionary& dictionary, uint8_t 
   crc.update(c.mappedCount);
   for (uint8_t sub = 1; sub <= c.mappedCount && sub <= srdo::kLongestMapping; ++sub) {
     crc.update(sub);
-    feed(crc, static_cast<uint32_t>(dictionary.readUnsigned(mapping, sub, 0)), 4);
+    feed(crc, dictionary.readUnsigned32(mapping, sub, 0), 4);
   }
   c.signature = crc.value();
   if (c.direction == srdo::kNotValid) {
@@ -146,7 +146,7 @@ AbortCode checkSrdoWrite(const od::ObjectDictionary& dictionary, const od::Entry
   }
   const auto communication =
       static_cast<uint16_t>(index - srdo::kFirstMapping + srdo::kFirstCommunication);
-  const auto direction = static_cast<uint8_t>(dictionary.readUnsigned(communication, 1, 0));
+  const auto direction = static_cast<uint8_t>(dictionary.readUnsigned32(communication, 1, 0));
   if (direction != srdo::kNotValid) {
     return AbortCode::kUnsupportedAccess;  // CiA 304: the SRDO is not valid while mapped
   }

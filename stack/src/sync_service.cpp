@@ -8,14 +8,14 @@
 namespace costa {
 
 void SyncService::configure(Microseconds now) noexcept {
-  const auto cob = static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, 0x080));
+  const auto cob = dictionary_.readUnsigned32(kCobIdIndex, 0, 0x080);
   canId_ = cob & 0x7FFU;
   producer_ = (cob & 0x40000000U) != 0U;
-  period_ = static_cast<uint32_t>(dictionary_.readUnsigned(kPeriodIndex, 0, 0));
+  period_ = dictionary_.readUnsigned32(kPeriodIndex, 0, 0);
   // A window longer than the stack's longest delay (35 min) acts as that long.
-  const auto window = static_cast<uint32_t>(dictionary_.readUnsigned(kWindowIndex, 0, 0));
+  const auto window = dictionary_.readUnsigned32(kWindowIndex, 0, 0);
   window_ = window < kLongestDelay ? window : kLongestDelay;
-  overflow_ = static_cast<uint8_t>(dictionary_.readUnsigned(kOverflowIndex, 0, 0));
+  overflow_ = static_cast<uint8_t>(dictionary_.readUnsigned32(kOverflowIndex, 0, 0));
   counter_ = 1;
   if (producer_ && period_ != 0U) {
     timer_.start(now, period_);

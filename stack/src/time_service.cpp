@@ -11,12 +11,20 @@ namespace {
 constexpr uint32_t kRebasePeriod = 600000000;  // 10 min
 constexpr uint32_t kMillisecondMask = 0x0FFFFFFF;
 
-/// `time` `elapsed` milliseconds later.
+/// `time` `elapsed` milliseconds later. 32-bit arithmetic only (no 64-bit division on small
+/// cores): time.milliseconds is below a day, so it and the rest of `elapsed` add up to less
+/// than two days, which fits.
 TimeOfDay later(const TimeOfDay& time, uint32_t elapsed) noexcept {
-  const uint64_t milliseconds = uint64_t{time.milliseconds} + elapsed;
+  constexpr uint32_t kDay = TimeOfDay::kMillisecondsPerDay;
+  uint32_t days = time.days + elapsed / kDay;
+  uint32_t milliseconds = time.milliseconds + elapsed % kDay;
+  if (milliseconds >= kDay) {
+    milliseconds -= kDay;
+    ++days;
+  }
   TimeOfDay result;
-  result.milliseconds = static_cast<uint32_t>(milliseconds % TimeOfDay::kMillisecondsPerDay);
-  result.days = static_cast<uint16_t>(time.days + milliseconds / TimeOfDay::kMillisecondsPerDay);
+  result.milliseconds = milliseconds;
+  result.days = static_cast<uint16_t>(days);
   return result;
 }
 
@@ -24,7 +32,7 @@ TimeOfDay later(const TimeOfDay& time, uint32_t elapsed) noexcept {
 
 void TimeService::configure() noexcept {
   // Without the object the default 0x100 has neither bit: no TIME.
-  const auto cob = static_cast<uint32_t>(dictionary_.readUnsigned(kCobIdIndex, 0, 0x100));
+  const auto cob = dictionary_.readUnsigned32(kCobIdIndex, 0, 0x100);
   canId_ = static_cast<uint16_t>(cob & 0x7FFU);
   consumer_ = (cob & kConsume) != 0U;
   producer_ = (cob & kProduce) != 0U;

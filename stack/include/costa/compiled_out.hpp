@@ -46,8 +46,9 @@ class CompiledOut {
   }
 };
 
-/// The objects of a compiled-out service: they do not exist.
-class AbsentObjects : public ObjectHook {
+/// The objects of a compiled-out service: they do not exist. Stateless: one instance serves
+/// every stand-in (serviceHook()), so that the stand-ins need no table of virtual functions each.
+class AbsentObjects final : public ObjectHook {
  public:
   AbortCode prepareRead(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                         const ReadRequest& request) noexcept override {
@@ -66,8 +67,23 @@ class AbsentObjects : public ObjectHook {
   }
 };
 
+/// Base of the stand-ins of compiled-out services whose objects do not exist.
+class AbsentService {};
+
+/// The hook behind a service's objects: the service itself.
+inline ObjectHook* serviceHook(ObjectHook& service) noexcept {
+  return &service;
+}
+/// The hook behind a compiled-out service's objects: the shared AbsentObjects (constant
+/// initialised: no constructor runs, no guard).
+inline ObjectHook* serviceHook(AbsentService& standIn) noexcept {
+  (void)standIn;
+  static AbsentObjects absent;
+  return &absent;
+}
+
 /// Node guarding compiled out: no reply to remote requests, no life time; no 0x100C/0x100D.
-class AbsentNodeGuarding final : public AbsentObjects {
+class AbsentNodeGuarding final : public AbsentService {
  public:
   AbsentNodeGuarding(od::ObjectDictionary& dictionary, TransmitPath& tx,
                      NodeClock& clock) noexcept {
@@ -92,7 +108,7 @@ class AbsentNodeGuarding final : public AbsentObjects {
 };
 
 /// Heartbeat consumer compiled out: other nodes' heartbeats are not monitored; no 0x1016.
-class AbsentHeartbeatConsumer final : public AbsentObjects {
+class AbsentHeartbeatConsumer final : public AbsentService {
  public:
   AbsentHeartbeatConsumer(od::ObjectDictionary& dictionary, HeartbeatMonitor* monitors,
                           size_t capacity) noexcept {
@@ -121,7 +137,9 @@ class AbsentHeartbeatConsumer final : public AbsentObjects {
 /// LSS compiled out: nothing on 0x7E5 is answered; the node-id and bit timing are the node's.
 class AbsentLssSlave {
  public:
-  AbsentLssSlave(TransmitPath& tx, LssSlaveHost& host) noexcept {
+  /// `host`: the node's LssBridgeChoice (itself compiled out), or any LssSlaveHost.
+  template <typename Host>
+  AbsentLssSlave(TransmitPath& tx, Host& host) noexcept {
     (void)tx;
     (void)host;
   }
@@ -209,7 +227,7 @@ inline ParameterStore* parameterStoreOf(AbsentParameterStore& store) noexcept {
 }
 
 /// 0x1010/0x1011 with parameter storage compiled out: they do not exist.
-class AbsentStoreCommands final : public AbsentObjects {
+class AbsentStoreCommands final : public AbsentService {
  public:
   AbsentStoreCommands(AbsentParameterStore* store, uint32_t saveAllGroups,
                       uint32_t restoreAllGroups) noexcept {
@@ -223,7 +241,7 @@ class AbsentStoreCommands final : public AbsentObjects {
 };
 
 /// TIME compiled out: TIME frames are not routed, 0x1012 does not exist, no clock of day.
-class AbsentTimeService final : public AbsentObjects {
+class AbsentTimeService final : public AbsentService {
  public:
   AbsentTimeService(od::ObjectDictionary& dictionary, TransmitPath& tx, NodeClock& clock,
                     FrameRouter& routes) noexcept {
@@ -263,7 +281,7 @@ class AbsentTimeService final : public AbsentObjects {
 };
 
 /// Additional SDO servers compiled out: no servers, no routes, 0x1201..0x127F do not exist.
-class AbsentSdoServers final : public AbsentObjects {
+class AbsentSdoServers final : public AbsentService {
  public:
   template <typename... Ignored>
   explicit AbsentSdoServers(Ignored&... ignored) noexcept {
@@ -287,7 +305,7 @@ class AbsentSdoServers final : public AbsentObjects {
 };
 
 /// EMCY consumer compiled out: no routes, 0x1028 does not exist.
-class AbsentEmcyConsumer final : public AbsentObjects {
+class AbsentEmcyConsumer final : public AbsentService {
  public:
   AbsentEmcyConsumer(const NodeListeners& listeners, FrameRouter& routes) noexcept {
     (void)listeners;
@@ -307,7 +325,7 @@ class AbsentEmcyConsumer final : public AbsentObjects {
 
 /// Safety compiled out: no GFC, no SRDO, 0x1300..0x13FF do not exist; nothing supervises the
 /// working state, which is always allowed.
-class AbsentSafetyService final : public AbsentObjects {
+class AbsentSafetyService final : public AbsentService {
  public:
   explicit AbsentSafetyService(const SafetyService::Services& services) noexcept { (void)services; }
   void addRoutes(FrameRouter& router) const noexcept { (void)router; }

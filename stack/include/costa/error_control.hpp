@@ -81,8 +81,8 @@ class ErrorControl {
   void applyErrorBehaviour(uint8_t behaviour) noexcept;
 
   /// The hooks of 0x100C/0x100D and of 0x1016 (stand-ins answering 0x06020000 when compiled out).
-  ObjectHook& guardingObjects() noexcept { return guarding_; }
-  ObjectHook& consumerObjects() noexcept { return consumer_; }
+  ObjectHook& guardingObjects() noexcept { return *serviceHook(guarding_); }
+  ObjectHook& consumerObjects() noexcept { return *serviceHook(consumer_); }
   const HeartbeatConsumerService& heartbeatConsumer() const noexcept { return consumer_; }
 
   uint32_t rxOverruns() const noexcept { return rxOverruns_; }

@@ -8,6 +8,8 @@
 #include <stdint.h>
 
 #include "costa/bit_timing_switch.hpp"
+#include "costa/compiled_out.hpp"
+#include "costa/features.hpp"
 #include "costa/lss_slave.hpp"
 #include "costa/node_events.hpp"
 #include "costa/node_settings.hpp"
@@ -42,5 +44,9 @@ class LssBridge final : public LssSlaveHost {
   const NodeListeners& listeners_;
   NmtStateMachine& nmt_;
 };
+
+/// The node's bridge: only the LSS slave calls it, so without LSS (features::kLss) the node
+/// holds none and none of its code is linked.
+using LssBridgeChoice = ServiceIf<features::kLss, LssBridge, CompiledOut>;
 
 }  // namespace costa

@@ -281,7 +281,7 @@ class Node {
   BitTimingSwitch bitTiming_;
   FrameRouter router_;
   ErrorControl errorControl_;
-  LssBridge lssBridge_;
+  LssBridgeChoice lssBridge_;
   LssSlaveService lss_;
   NmtStateMachine nmt_;
   ServiceObjects services_;  ///< after the services it names; access_ refers to it

@@ -64,7 +64,7 @@ class StoredParameters final : private StoreCommands::RestoreAllListener, privat
   LssStoreResult storeLssConfiguration(uint8_t nodeId, LssBitTiming timing) noexcept;
 
   /// The hook of 0x1010/0x1011.
-  ObjectHook& commands() noexcept { return commands_; }
+  ObjectHook& commands() noexcept { return *serviceHook(commands_); }
   /// The observer that saves a written entry's group (NodeSettings::saveParametersOnWrite),
   /// or null.
   WriteObserver* autoSave() noexcept;

@@ -109,6 +109,9 @@ class ObjectDictionary {
   /// Convenience lookups for the stack's own objects: value of (index, sub) or `fallback` when
   /// absent.
   uint64_t readUnsigned(uint16_t index, uint8_t subIndex, uint64_t fallback) const noexcept;
+  /// The same, truncated to 32 bits (as static_cast<uint32_t> of the above): for the stack's
+  /// objects of 32 bits or less; cheaper to call where 64-bit values cost (small cores).
+  uint32_t readUnsigned32(uint16_t index, uint8_t subIndex, uint32_t fallback) const noexcept;
   /// Stores when present; returns false when absent.
   bool storeUnsigned(uint16_t index, uint8_t subIndex, uint64_t value) noexcept;
 
