@@ -237,6 +237,24 @@ TEST_F(FeaturesTest, NothingIsStoredWithoutParameterStorage) {
             "");
 }
 
+// A standard frame with an identifier beyond 11 bits, which no controller delivers, is ignored,
+// also while the routing table waits to be rebuilt after a COB-ID changed (a build without
+// additional SDO servers rebuilds it at the next frame).
+TEST_F(FeaturesTest, AStandardFrameBeyondElevenBitsIsIgnoredWhileTheRoutesAreStale) {
+  EXPECT_EQ(play("tx 701 [1] 00\n"
+                 "rx 601 [8] 23 00 14 01 01 02 00 80  # RPDO 1 not valid: its route goes\n"
+                 "tx 581 [8] 60 00 14 01 00 00 00 00\n"),
+            "");
+  const uint32_t before = ignored();
+  CanFrame frame;
+  frame.id = 0xFFFFFFFFU;
+  frame.dlc = 8;
+  frame.data[0] = 0x40;  // an upload request of 0x1000:00
+  bus_->send(frame);
+  EXPECT_EQ(play("silence\n"), "");
+  EXPECT_EQ(ignored() - before, 1U);
+}
+
 /// Each switch of the two LEDs, as "1" (on) and "0" (off).
 class RecordingLeds final : public IndicatorOutputs {
  public:

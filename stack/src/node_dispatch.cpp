@@ -113,9 +113,10 @@ void Node::onFrame(const CanFrame& frame, Microseconds now) noexcept {
   // (every segment one). A table that is stale, or routes their CAN-ID elsewhere too, has no
   // fast CAN-ID; shorter requests, which the server may refuse, take the table (and, built for
   // size, every frame). Both ways are calls of their own, so that these tests are all a frame
-  // pays before.
-  if (kExpandFastPaths && frame.id == router_.fastId() && frame.dlc == 8U && !frame.rtr &&
-      !frame.extended) {
+  // pays before. (Without a fast CAN-ID, fastId() is beyond 11 bits: the bound keeps a
+  // malformed frame with that identifier off the short cut.)
+  if (kExpandFastPaths && frame.id == router_.fastId() && frame.id <= FrameRouter::kLargestId &&
+      frame.dlc == 8U && !frame.rtr && !frame.extended) {
     onSdoRequest(frame, now);
   } else {
     routeFrame(frame, now);

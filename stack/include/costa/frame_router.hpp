@@ -83,8 +83,8 @@ class FrameRouter {
     fastId_ = single ? id : kNoFastId;
     return single;
   }
-  /// The CAN-ID of setFastId() while the table is fresh, else kNoFastId (no CAN-ID, 11 or 29
-  /// bits, has that value).
+  /// The CAN-ID of setFastId() while the table is fresh, else kNoFastId (beyond 11 and 29 bits:
+  /// a caller that compares a frame's identifier with it also checks the frame's bound).
   uint32_t fastId() const noexcept { return fastId_; }
   static constexpr uint32_t kNoFastId = UINT32_MAX;
 
