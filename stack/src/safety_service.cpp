@@ -10,19 +10,32 @@ namespace {
 
 constexpr uint8_t kCommunicationErrorBit = 0x10;
 
-/// The entry that sub-index `sub` of SRDO mapping object `mapping` names (not valid: none).
-od::EntryRef mappedEntry(const od::ObjectDictionary& dictionary, uint16_t mapping,
-                         uint8_t sub) noexcept {
-  const auto entry = dictionary.readUnsigned32(mapping, sub, 0);
-  return dictionary.find(static_cast<uint16_t>(entry >> 16U), static_cast<uint8_t>(entry >> 8U));
+/// One mapped pair of an SRDO: the normal entry, and the inverted entry when it is one of its own
+/// (CiA 304: the application's inverted copy) of the same size; `copy` is not valid when the
+/// pair names the normal entry twice (the stack inverts it). `normal` is not valid: no pair.
+struct MappedPair {
+  od::EntryRef normal;
+  od::EntryRef copy;
+};
+
+od::EntryRef entryOf(const od::ObjectDictionary& dictionary, uint32_t mapping) noexcept {
+  return dictionary.find(static_cast<uint16_t>(mapping >> 16U),
+                         static_cast<uint8_t>(mapping >> 8U));
 }
 
-/// The inverted data of the pair at `sub` has an entry of its own (CiA 304: the application's
-/// inverted copy), rather than the normal entry again (the stack inverts it).
-bool ownInvertedEntry(const od::ObjectDictionary& dictionary, uint16_t mapping,
+/// The pair at odd sub-index `sub` of SRDO mapping object `mapping`.
+MappedPair mappedPair(const od::ObjectDictionary& dictionary, uint16_t mapping,
                       uint8_t sub) noexcept {
-  return dictionary.readUnsigned32(mapping, sub, 0) !=
-         dictionary.readUnsigned32(mapping, sub + 1U, 0);
+  const uint32_t normal = dictionary.readUnsigned32(mapping, sub, 0);
+  const uint32_t inverted = dictionary.readUnsigned32(mapping, sub + 1U, 0);
+  MappedPair pair{entryOf(dictionary, normal), {}};
+  if (inverted != normal) {
+    const od::EntryRef copy = entryOf(dictionary, inverted);
+    if (copy.valid() && pair.normal.valid() && copy.size() == pair.normal.size()) {
+      pair.copy = copy;
+    }
+  }
+  return pair;
 }
 
 /// EMCY error code of a failure: CiA 301's closest, CiA 304 names none (docs/manual-errata.md,
@@ -171,17 +184,17 @@ void SafetyService::transmit(const SrdoChannel& channel) noexcept {
   inverted.dlc = c.length;
   size_t offset = 0;
   for (uint8_t sub = 1; sub < c.mappedCount; sub = static_cast<uint8_t>(sub + 2U)) {
-    const od::EntryRef ref = mappedEntry(dictionary, mapping, sub);
-    if (!ref.valid() || offset + ref.size() > sizeof(normal.data)) {
+    const MappedPair pair = mappedPair(dictionary, mapping, sub);
+    if (!pair.normal.valid() || offset + pair.normal.size() > sizeof(normal.data)) {
       continue;  // not after checkSrdoMapping() (the configuration is checked every cycle)
     }
-    const size_t size = dictionary.read(ref, 0, normal.data + offset, ref.size());
-    const od::EntryRef copy = mappedEntry(dictionary, mapping, static_cast<uint8_t>(sub + 1U));
-    if (ownInvertedEntry(dictionary, mapping, sub) && copy.valid() && copy.size() == size) {
-      (void)dictionary.read(copy, 0, inverted.data + offset, size);  // the application's copy
+    const size_t size = dictionary.read(pair.normal, 0, normal.data + offset, pair.normal.size());
+    if (pair.copy.valid()) {
+      (void)dictionary.read(pair.copy, 0, inverted.data + offset,
+                            size);  // as the application keeps it
     } else {
       for (size_t i = offset; i < offset + size; ++i) {
-        inverted.data[i] = static_cast<uint8_t>(~normal.data[i]);  // one entry: inverted here
+        inverted.data[i] = static_cast<uint8_t>(~normal.data[i]);
       }
     }
     offset += size;
@@ -196,21 +209,20 @@ void SafetyService::deliver(const SrdoChannel& channel) noexcept {
   const auto mapping = static_cast<uint16_t>(srdo::kFirstMapping + c.number - 1U);
   size_t offset = 0;
   for (uint8_t sub = 1; sub < c.mappedCount; sub = static_cast<uint8_t>(sub + 2U)) {
-    const od::EntryRef ref = mappedEntry(dictionary, mapping, sub);
-    if (!ref.valid() || offset + ref.size() > c.length) {
+    const MappedPair pair = mappedPair(dictionary, mapping, sub);
+    if (!pair.normal.valid() || offset + pair.normal.size() > c.length) {
       continue;
     }
-    const size_t size = ref.size();
-    (void)s_.access.write(ref, channel.data() + offset, size);
-    const od::EntryRef copy = mappedEntry(dictionary, mapping, static_cast<uint8_t>(sub + 1U));
-    if (ownInvertedEntry(dictionary, mapping, sub) && copy.valid() && copy.size() == size) {
+    const size_t size = pair.normal.size();
+    (void)s_.access.write(pair.normal, channel.data() + offset, size);
+    if (pair.copy.valid()) {
       // The inverted frame was checked to be the NOT of the normal one: its bytes, for the
       // application's inverted copy.
       uint8_t bytes[8] = {};
       for (size_t i = 0; i < size; ++i) {
         bytes[i] = static_cast<uint8_t>(~channel.data()[offset + i]);
       }
-      (void)s_.access.write(copy, bytes, size);
+      (void)s_.access.write(pair.copy, bytes, size);
     }
     offset += size;
   }
