@@ -35,7 +35,8 @@ int32_t littleEndian32(const CanFrame& frame, size_t at) {
 
 /// The next frame on `id`, skipping others (heartbeats); false after the timeout.
 bool nextOn(SocketBus& bus, uint32_t id, CanFrame* frame) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(5000);
+  const auto end =
+      std::chrono::steady_clock::now() + std::chrono::milliseconds(kSocketReceiveTimeoutMs);
   while (std::chrono::steady_clock::now() < end) {
     if (bus.receive(frame, kSocketReceiveTimeoutMs) && frame->id == id) {
       return true;
@@ -179,7 +180,7 @@ TEST(JointOnVcan, ASavedNodeIdIsTheNextRunsWithStorage) {
 
 TEST(JointCommandLine, ListDevicesShowsThePublicName) {
   SlaveProcess slave({"--list-devices"});
-  EXPECT_EQ(slave.waitExit(5000), 0);
+  EXPECT_EQ(slave.waitExit(kSlaveExitTimeoutMs), 0);
   EXPECT_NE(slave.output().find("mseries    M-series robot joint"), std::string::npos)
       << slave.output();
   EXPECT_NE(slave.output().find("(also: m-series)"), std::string::npos) << slave.output();

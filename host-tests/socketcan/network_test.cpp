@@ -233,7 +233,7 @@ TEST(NetworkCommandLine, ErrorsAreOneLineAndStatusTwo) {
   };
   for (const Case& c : cases) {
     SlaveProcess slave(c.arguments);
-    const int status = slave.waitExit(5000);
+    const int status = slave.waitExit(kSlaveExitTimeoutMs);
     const std::string output = slave.output();
     EXPECT_EQ(output.rfind(c.message, 0), 0U) << output;
     EXPECT_EQ(output.find('\n'), output.size() - 1U) << output;  // one line

@@ -164,7 +164,7 @@ TEST(SlaveProcessOnVcan, SoloSpeedReferenceBecomesARampingSpeedFeedbackTpdo) {
 
 TEST(SlaveProcessOnVcan, UnknownInterfaceIsOneLineAndNonZero) {
   SlaveProcess slave({"--iface", "nosuchcan0", "example"});
-  const int status = slave.waitExit(5000);
+  const int status = slave.waitExit(kSlaveExitTimeoutMs);
   EXPECT_EQ(status, 1);
   EXPECT_EQ(slave.output(), "costa-slave: no such CAN interface: nosuchcan0\n");
 }
@@ -186,7 +186,7 @@ TEST(SlaveCommandLine, BadArgumentsAreOneLineAndNonZero) {
   };
   for (const Case& c : cases) {
     SlaveProcess slave(c.arguments);
-    EXPECT_EQ(slave.waitExit(5000), 2);
+    EXPECT_EQ(slave.waitExit(kSlaveExitTimeoutMs), 2);
     const std::string output = slave.output();
     EXPECT_EQ(output.rfind(c.message, 0), 0U) << output;
     EXPECT_EQ(countLines(output), 1) << output;
@@ -195,7 +195,7 @@ TEST(SlaveCommandLine, BadArgumentsAreOneLineAndNonZero) {
 
 TEST(SlaveCommandLine, HelpListsTheInterface) {
   SlaveProcess slave({"--help"});
-  EXPECT_EQ(slave.waitExit(5000), 0);
+  EXPECT_EQ(slave.waitExit(kSlaveExitTimeoutMs), 0);
   EXPECT_NE(slave.output().find("--iface NAME"), std::string::npos);
 }
 

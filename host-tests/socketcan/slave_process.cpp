@@ -63,10 +63,10 @@ int SlaveProcess::stop(int signal) {
     return -1;
   }
   ::kill(pid_, signal);
-  const int status = waitExit(5000);
+  const int status = waitExit(kSlaveExitTimeoutMs);
   if (pid_ > 0) {
     ::kill(pid_, SIGKILL);
-    waitExit(5000);
+    waitExit(kSlaveExitTimeoutMs);
   }
   return status;
 }

@@ -60,7 +60,8 @@ std::string SocketBus::simulate(const std::string& command) {
   target.sun_family = AF_UNIX;
   std::memcpy(target.sun_path, controlPath_.c_str(), controlPath_.size());
   std::string result = "costa-slave did not answer on " + controlPath_;
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  const auto end =
+      std::chrono::steady_clock::now() + std::chrono::milliseconds(kSlaveExitTimeoutMs);
   while (std::chrono::steady_clock::now() < end) {
     if (::sendto(fd, command.data(), command.size(), 0, reinterpret_cast<sockaddr*>(&target),
                  sizeof(target)) < 0) {
