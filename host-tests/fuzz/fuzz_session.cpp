@@ -132,8 +132,9 @@ class Session {
 
   /// Every invariant, after power-on or an event.
   std::string checkAll() {
-    std::string problem = checkFrames();
     Node& node = device_->node();
+    const CanIdSet allowedNow = allowedTransmitIds(node, device_->hasLss());
+    std::string problem = checkFrames(allowedNow);
     if (problem.empty()) {
       problem = checkDictionaryValues(node.dictionary());
     }
@@ -157,7 +158,6 @@ class Session {
     }
     // A frame may wait in the node's queue while the controller refuses frames, and leave after
     // its node-id or COB-ID changed: it may use any id allowed since the queue was last empty.
-    const CanIdSet allowedNow = allowedTransmitIds(node, device_->hasLss());
     if (node.txPending()) {
       allowedBefore_.merge(allowedNow);
     } else {
@@ -250,7 +250,8 @@ class Session {
       next_ = device_->process(now_);
       ++processCalls_;
       if (can_.count() > kFramesBeforeCheck) {
-        const std::string problem = checkFrames();
+        const std::string problem =
+            checkFrames(allowedTransmitIds(device_->node(), device_->hasLss()));
         if (!problem.empty()) {
           return problem;
         }
@@ -287,17 +288,17 @@ class Session {
     return runProcess();
   }
 
-  /// Checks the frames sent since the last check against the ids allowed now, before the
-  /// event, and since the transmit queue was last empty; forgets them.
-  std::string checkFrames() {
+  /// Checks the frames sent since the last check against the ids allowed now (`allowedNow`),
+  /// before the event, and since the transmit queue was last empty; forgets them.
+  std::string checkFrames(const CanIdSet& allowedNow) {
     if (!can_.problem().empty()) {
       return can_.problem();
     }
     if (can_.count() == 0U) {
       return "";
     }
-    Node& node = device_->node();
-    CanIdSet allowed = allowedTransmitIds(node, device_->hasLss());
+    const Node& node = device_->node();
+    CanIdSet allowed = allowedNow;
     allowed.merge(allowedBefore_);
     for (size_t i = 0; i < can_.count(); ++i) {
       if (trace_ != nullptr) {
