@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "checked_state.hpp"
 #include "costa/cob_ids.hpp"
 #include "costa/port/memory/recording_can.hpp"
 #include "dictionary_rules.hpp"
@@ -133,13 +134,18 @@ class Session {
   /// Every invariant, after power-on or an event.
   std::string checkAll() {
     Node& node = device_->node();
-    const CanIdSet allowedNow = allowedTransmitIds(node, device_->hasLss());
+    const bool unchanged = checked_.same(node);
+    const CanIdSet allowedNow =
+        unchanged ? checked_.allowed() : allowedTransmitIds(node, device_->hasLss());
     std::string problem = checkFrames(allowedNow);
-    if (problem.empty()) {
+    if (problem.empty() && !unchanged) {
       problem = checkDictionaryValues(node.dictionary());
     }
-    if (problem.empty()) {
+    if (problem.empty() && !unchanged) {
       problem = checkConfiguredCanIds(node);
+    }
+    if (problem.empty() && !unchanged) {
+      checked_.remember(node, allowedNow);
     }
     if (problem.empty()) {
       problem = checkStateMachines(node, device_->hasLss());
@@ -331,6 +337,7 @@ class Session {
   Microseconds now_ = 0xFFFFFFFFU - 999999U;
   Microseconds next_ = kNever;
   CanIdSet allowedBefore_;  ///< at the end of the last event, and while frames were queued
+  CheckedState checked_;    ///< what the dictionary and CAN-ID checks last passed on
   size_t storageChanges_ = SIZE_MAX;  // the first check always runs
   uint64_t processCalls_ = 0;
 };

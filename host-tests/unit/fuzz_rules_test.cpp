@@ -6,7 +6,9 @@
 #include <string.h>
 
 #include <memory>
+#include <vector>
 
+#include "checked_state.hpp"
 #include "costa/od/little_endian.hpp"
 #include "costa/port/memory/memory_storage.hpp"
 #include "costa/port/memory/recording_can.hpp"
@@ -155,6 +157,36 @@ TEST_F(FuzzRules, DictionaryValuesOutsideTheirDefinitionAreReported) {
   dictionary.ramAddress(label)[label.size()] = 'x';
   EXPECT_EQ(checkDictionaryValues(dictionary),
             "dictionary value 0x2006:00: string without its terminating zero");
+}
+
+TEST_F(FuzzRules, TheChecksRunAgainWhenAValueTheNodeIdOrTheStateChanges) {
+  CheckedState checked;
+  EXPECT_FALSE(checked.same(node()));  // nothing checked yet
+  CanIdSet allowed = allowedTransmitIds(node(), true);
+  checked.remember(node(), allowed);
+  EXPECT_TRUE(checked.same(node()));
+  EXPECT_TRUE(checked.allowed().contains(0x581));
+  od::ObjectDictionary& dictionary = node().dictionary();
+  dictionary.storeUnsigned(0x2004, 2, 7);  // any value, even one within its limits
+  EXPECT_FALSE(checked.same(node()));
+  checked.remember(node(), allowed);
+  target_.onFrame(frame(0x000, {0x01, 0x01}), 0);  // operational: same values, another state
+  EXPECT_FALSE(checked.same(node()));
+  allowed = allowedTransmitIds(node(), true);
+  checked.remember(node(), allowed);
+  EXPECT_TRUE(checked.allowed().contains(0x181));  // the TPDOs' ids now
+  target_.onFrame(frame(0x000, {0x80, 0x00}), 0);  // pre-operational
+  auto* values = static_cast<uint8_t*>(dictionary.values());
+  const std::vector<uint8_t> before(values, values + dictionary.definition().valuesSize);
+  checked.remember(node(), allowedTransmitIds(node(), true));
+  target_.onFrame(frame(0x7E5, {0x04, 0x01, 0, 0, 0, 0, 0, 0}), 0);  // LSS configuration
+  target_.onFrame(frame(0x7E5, {0x11, 0x05, 0, 0, 0, 0, 0, 0}), 0);  // pending node-id 5
+  target_.onFrame(frame(0x7E5, {0x04, 0x00, 0, 0, 0, 0, 0, 0}), 0);
+  target_.onFrame(frame(0x000, {0x82, 0x00}), 0);  // reset communication: node-id 5
+  ASSERT_EQ(node().nodeId(), 5U);
+  ASSERT_EQ(node().state(), NmtState::kPreOperational);
+  memcpy(values, before.data(), before.size());  // the same values: only the node-id differs
+  EXPECT_FALSE(checked.same(node()));
 }
 
 TEST_F(FuzzRules, StoredParametersMustLoad) {

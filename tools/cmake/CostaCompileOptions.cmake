@@ -41,8 +41,10 @@ endif()
 # Fuzzing build (tools/fuzz, clang only): every object file carries libFuzzer's coverage and the
 # sanitizers; the fuzz executables add -fsanitize=fuzzer (libFuzzer's main). The core has no
 # RTTI, so UBSan's vptr check, which needs it, is off. COSTA_FUZZ_FAST (tools/fuzz --fast) keeps
-# the edge coverage only: no sanitizers, no tracing of comparisons (whose callbacks at every
-# comparison of the dictionary's searches cost more than the rest of the instrumentation).
+# libFuzzer's coverage without its tracing of comparisons (whose callbacks at every comparison of
+# the dictionary's searches cost more than the rest of the instrumentation) and without
+# sanitizers. The coverage symbols then come from libFuzzer alone: only the fuzz executables
+# (-fsanitize=fuzzer) link in such a tree.
 if(COSTA_FUZZ AND COSTA_FUZZ_FAST)
   add_compile_options(-fsanitize=fuzzer-no-link -fno-sanitize-coverage=trace-cmp)
 elseif(COSTA_FUZZ)
