@@ -78,6 +78,37 @@ TEST_F(Tpdo, InhibitTimeDelaysButKeepsEvents) {
       "silence\nwait 39\nsilence\nwait 1\ntx 181 [6] 00 00 00 00 D7 00\nwait 200\nsilence");
 }
 
+TEST_F(Tpdo, AnEventTimerThatExpiresWithinTheInhibitTimeSendsWhenItEnds) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 601 [8] 2B 00 18 03 F4 01 00 00   # inhibit 500 x 100 us = 50 ms
+    tx 581 [8] 60 00 18 03 00 00 00 00
+    rx 601 [8] 2B 00 18 05 14 00 00 00   # event timer 20 ms, shorter
+    tx 581 [8] 60 00 18 05 00 00 00 00
+    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 000 [2] 01 01
+    wait 19
+    silence
+    wait 1
+    tx 181 [6] 00 00 00 00 D7 00         # the event timer; inhibited for 50 ms from here
+    wait 49
+    silence                              # the timer expired at 40 ms, within the inhibit time
+    wait 1
+    tx 181 [6] 00 00 00 00 D7 00         # at its end, the timer restarted
+    wait 49
+    silence
+    wait 1
+    tx 181 [6] 00 00 00 00 D7 00
+  )");
+  // Past the timer (20 ms on), within the inhibit time (50 ms): the next deadline is its end.
+  withNode([](Node& node) {
+    const Microseconds sent = node.now();
+    EXPECT_EQ(node.process(sent + 30000U), sent + 50000U);
+  });
+}
+
 TEST_F(Tpdo, SynchronousCyclicEveryNthSync) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 00 18 02 03 00 00 00   # every 3rd SYNC

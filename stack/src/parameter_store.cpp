@@ -21,14 +21,23 @@ bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit v
 
 /// Entries whose default is `$NODEID + n` are stored without the node-id, so that they follow a
 /// new node-id (an EMCY COB-ID 0x80 + id stays 0x80 + the new id). `sign` -1 before a save,
-/// +1 after a save and after a load.
+/// +1 after a save and after a load. The node-id moves every bit of a number but only the
+/// CAN-ID of a COB-ID (an UNSIGNED32 of the communication profile area, 0x1000..0x1FFF): bits
+/// 0..10, or 0..28 with bit 29 (a 29-bit frame). A COB-ID's flags never change: an invalid one
+/// stays invalid whatever the node-ids it is saved and loaded with.
 void shiftNodeIdRelative(od::ObjectDictionary& dictionary, uint8_t group, int sign) noexcept {
   for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
     if (ref.group() == group && ref.has(od::kNodeIdRelative) &&
         dictionary.ramAddress(ref) != nullptr) {
       const uint64_t value = dictionary.readUnsigned(ref);
       const uint64_t id = dictionary.nodeId();
-      dictionary.storeUnsigned(ref, sign < 0 ? value - id : value + id);
+      uint64_t moved = sign < 0 ? value - id : value + id;
+      if (ref.size() == 4U && ref.index() >= 0x1000U && ref.index() <= 0x1FFFU) {
+        const auto cobId = static_cast<uint32_t>(value);
+        const uint32_t canIdBits = (cobId & (1U << 29U)) != 0U ? 0x1FFFFFFFU : 0x7FFU;
+        moved = (cobId & ~canIdBits) | (static_cast<uint32_t>(moved) & canIdBits);
+      }
+      dictionary.storeUnsigned(ref, moved);
     }
   }
 }

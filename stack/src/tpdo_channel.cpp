@@ -112,7 +112,8 @@ void TpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
     return;
   }
   if (reached(now, eventDeadline_)) {
-    event_ = true;
+    event_ = true;            // sent now, or when the inhibit time ends
+    eventDeadline_ = kNever;  // the timer restarts when the PDO is sent
   }
   if (reached(now, inhibitUntil_)) {
     inhibitUntil_ = kNever;  // the inhibit time is over
