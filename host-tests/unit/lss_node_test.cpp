@@ -107,13 +107,15 @@ TEST(LssNode, StoredConfigurationSurvivesAPowerCycle) {
   EXPECT_EQ(bus.node().bitTiming().tableIndex, 2U);
 }
 
-TEST(LssNode, AStoredCobIdFollowsANewNodeIdInItsCanIdOnly) {
+TEST(LssNode, AStoredCobIdFollowsANewNodeIdOnlyAtItsDefaultCanId) {
   port::MemoryStorageOf<16384> storage;
   InProcessBus bus(exampleWith(lssSettings(9, &storage)));
   EXPECT_EQ(playText(R"(
     tx 709 [1] 00
-    rx 609 [8] 23 14 10 00 00 00 00 80   # EMCY COB-ID: not valid, CAN-ID 0
+    rx 609 [8] 23 14 10 00 00 00 00 80   # EMCY COB-ID: not valid, moved to CAN-ID 0
     tx 589 [8] 60 14 10 00 00 00 00 00
+    rx 609 [8] 23 00 14 01 09 02 00 80   # RPDO1: not valid, at its default CAN-ID 0x200 + 9
+    tx 589 [8] 60 00 14 01 00 00 00 00
     rx 609 [8] 23 10 10 02 73 61 76 65   # save the communication parameters
     tx 589 [8] 60 10 10 02 00 00 00 00
     rx 7E5 [8] 04 01 00 00 00 00 00 00
@@ -122,8 +124,10 @@ TEST(LssNode, AStoredCobIdFollowsANewNodeIdInItsCanIdOnly) {
     rx 7E5 [8] 04 00 00 00 00 00 00 00
     rx 000 [2] 82 09                     # reset communication: node-id 5, the values loaded
     tx 705 [1] 00
-    rx 605 [8] 40 14 10 00 00 00 00 00   # 0 - 9 + 5 within the 11 bits: still not valid
-    tx 585 [8] 43 14 10 00 FC 07 00 80
+    rx 605 [8] 40 14 10 00 00 00 00 00   # moved: stays where the master put it, not valid
+    tx 585 [8] 43 14 10 00 00 00 00 80
+    rx 605 [8] 40 00 14 01 00 00 00 00   # at its default: follows the node-id, not valid
+    tx 585 [8] 43 00 14 01 05 02 00 80
   )",
                      bus),
             "");

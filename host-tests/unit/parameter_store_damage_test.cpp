@@ -110,7 +110,7 @@ TEST_P(ForeignImageTest, IsIncompatibleAndLeavesTheDefaults) {
   header.location = static_cast<uint32_t>(slotOffset(kApplication, 0));
   header.sequence = 1;
   if (what == "format version") {
-    header.formatVersion = 2;
+    header.formatVersion = kImageFormatVersion + 1U;
   } else if (what == "kind") {
     header.kind = static_cast<ImageKind>(0x03);
   } else if (what == "region") {

@@ -36,7 +36,7 @@ bool writeSample(NvStorage& storage, const std::vector<uint8_t>& payload = kPayl
 TEST(StoredImageTest, HeaderBytesAreLittleEndianInTheDocumentedOrder) {
   uint8_t bytes[kImageCrcOffset] = {};
   encodeImageHeader(sampleHeader(5), bytes);
-  const std::vector<uint8_t> expected = {'C',  'S',  'T',  'P',  0x01, 0x01, 0x02, 0x01,
+  const std::vector<uint8_t> expected = {'C',  'S',  'T',  'P',  0x02, 0x01, 0x02, 0x01,
                                          0x44, 0x33, 0x22, 0x11, 0x10, 0x00, 0x00, 0x00,
                                          0x05, 0x00, 0x00, 0x00, 0xBE, 0xBA, 0xFE, 0xCA};
   EXPECT_EQ(std::vector<uint8_t>(bytes, bytes + kImageCrcOffset), expected);

@@ -1,10 +1,12 @@
 #include "costa/parameter_store.hpp"
 
+#include "costa/od/bytes.hpp"
+
 namespace costa {
 namespace {
 
-/// Calls `visit(address, size)` for every RAM entry of `group` in dictionary order; stops at
-/// the first false.
+/// Calls `visit(ref, address, size)` for every RAM entry of `group` in dictionary order; stops
+/// at the first false.
 template <typename Visit>
 bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit visit) noexcept {
   for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
@@ -12,32 +14,67 @@ bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit v
       continue;
     }
     uint8_t* address = dictionary.ramAddress(ref);
-    if (address != nullptr && !visit(address, static_cast<size_t>(ref.size()))) {
+    if (address != nullptr && !visit(ref, address, static_cast<size_t>(ref.size()))) {
       return false;
     }
   }
   return true;
 }
 
-/// Entries whose default is `$NODEID + n` are stored without the node-id, so that they follow a
-/// new node-id (an EMCY COB-ID 0x80 + id stays 0x80 + the new id). `sign` -1 before a save,
-/// +1 after a save and after a load. The node-id moves every bit of a number but only the
-/// CAN-ID of a COB-ID (an UNSIGNED32 of the communication profile area, 0x1000..0x1FFF): bits
-/// 0..10, or 0..28 with bit 29 (a 29-bit frame). A COB-ID's flags never change: an invalid one
-/// stays invalid whatever the node-ids it is saved and loaded with.
-void shiftNodeIdRelative(od::ObjectDictionary& dictionary, uint8_t group, int sign) noexcept {
+// `$NODEID` entries (CiA 306: the default is `$NODEID + n`) follow the node-id across a save
+// and a load with another node-id. A number is stored without the node-id and gets the node-id
+// of the load. A COB-ID (an UNSIGNED32 of 0x1000..0x1FFF) follows the node-id only while its
+// CAN-ID is its default's: it is stored with the default's CAN-ID, to which a load adds the
+// node-id; a COB-ID whose CAN-ID a master moved elsewhere is stored and loaded as it is, so that
+// a node-id change never moves it onto a CAN-ID of another node or one CiA 301 restricts. A
+// COB-ID's flags never change.
+
+/// The CAN-ID bits of a COB-ID: 0..10, or 0..28 with bit 29 (a 29-bit frame).
+uint32_t canIdBits(uint64_t cobId) noexcept {
+  return (cobId & (uint32_t{1} << 29U)) != 0U ? 0x1FFFFFFFU : 0x7FFU;
+}
+
+/// The CAN-ID bits of `ref`'s default without the node-id, when `ref` is a COB-ID; else false.
+bool defaultCanId(const od::ObjectDictionary& dictionary, const od::EntryRef& ref, uint64_t value,
+                  uint32_t* canId) noexcept {
+  if (ref.size() != 4U || ref.index() < 0x1000U || ref.index() > 0x1FFFU) {
+    return false;
+  }
+  uint8_t bytes[4] = {};
+  od::copyDefault(dictionary.definition(), ref, bytes);
+  uint32_t base = 0;
+  copyBytes(&base, bytes, sizeof(base));
+  *canId = base & canIdBits(value);
+  return true;
+}
+
+/// What a save stores of the `$NODEID` entry `ref` whose value is `value`.
+uint64_t storedForm(const od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                    uint64_t value) noexcept {
+  const uint64_t id = dictionary.nodeId();
+  uint32_t canId = 0;
+  if (!defaultCanId(dictionary, ref, value, &canId)) {
+    return value - id;
+  }
+  const uint32_t bits = canIdBits(value);
+  return ((value - id) & bits) == canId ? (value & ~uint64_t{bits}) | canId : value;
+}
+
+/// Adds the node-id to the `$NODEID` entries of `group` after a load (see storedForm()).
+void addNodeIdAfterLoad(od::ObjectDictionary& dictionary, uint8_t group) noexcept {
+  const uint64_t id = dictionary.nodeId();
   for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
-    if (ref.group() == group && ref.has(od::kNodeIdRelative) &&
-        dictionary.ramAddress(ref) != nullptr) {
-      const uint64_t value = dictionary.readUnsigned(ref);
-      const uint64_t id = dictionary.nodeId();
-      uint64_t moved = sign < 0 ? value - id : value + id;
-      if (ref.size() == 4U && ref.index() >= 0x1000U && ref.index() <= 0x1FFFU) {
-        const auto cobId = static_cast<uint32_t>(value);
-        const uint32_t canIdBits = (cobId & (1U << 29U)) != 0U ? 0x1FFFFFFFU : 0x7FFU;
-        moved = (cobId & ~canIdBits) | (static_cast<uint32_t>(moved) & canIdBits);
-      }
-      dictionary.storeUnsigned(ref, moved);
+    if (ref.group() != group || !ref.has(od::kNodeIdRelative) ||
+        dictionary.ramAddress(ref) == nullptr) {
+      continue;
+    }
+    const uint64_t value = dictionary.readUnsigned(ref);
+    uint32_t canId = 0;
+    if (!defaultCanId(dictionary, ref, value, &canId)) {
+      dictionary.storeUnsigned(ref, value + id);
+    } else if ((value & canIdBits(value)) == canId) {
+      const uint32_t bits = canIdBits(value);
+      dictionary.storeUnsigned(ref, (value & ~uint64_t{bits}) | ((value + id) & bits));
     }
   }
 }
@@ -144,9 +181,20 @@ StoreResult ParameterStore::writeImage(const Region& region, ImageKind kind, con
   ImageWriter writer(storage_, offset, region.slotSize);
   bool ok = writer.begin(header);
   if (ok && fromDictionary) {
+    // A `$NODEID` entry is written in its stored form (storedForm()) and its value put back.
+    od::ObjectDictionary& dictionary = dictionary_;
     ok = forEachStoredEntry(
-        dictionary_, static_cast<uint8_t>(region.id),
-        [&writer](const uint8_t* address, size_t size) { return writer.append(address, size); });
+        dictionary, static_cast<uint8_t>(region.id),
+        [&writer, &dictionary](const od::EntryRef& ref, const uint8_t* address, size_t size) {
+          if (!ref.has(od::kNodeIdRelative)) {
+            return writer.append(address, size);
+          }
+          const uint64_t value = dictionary.readUnsigned(ref);
+          dictionary.storeUnsigned(ref, storedForm(dictionary, ref, value));
+          const bool appended = writer.append(address, size);
+          dictionary.storeUnsigned(ref, value);
+          return appended;
+        });
   } else if (ok && length != 0U) {
     ok = writer.append(data, length);
   }
@@ -159,10 +207,7 @@ StoreResult ParameterStore::save(uint8_t group) noexcept {
   if (found != StoreResult::kOk) {
     return found;
   }
-  shiftNodeIdRelative(dictionary_, group, -1);
-  const StoreResult written = writeImage(*region, ImageKind::kValues, nullptr, 0);
-  shiftNodeIdRelative(dictionary_, group, +1);
-  return written;
+  return writeImage(*region, ImageKind::kValues, nullptr, 0);
 }
 
 StoreResult ParameterStore::saveGroups(uint32_t groups) noexcept {
@@ -215,10 +260,11 @@ StoreResult ParameterStore::load(uint8_t group) noexcept {
   ImageReader reader(storage_, slotOffset(*region, examination.kept),
                      examination.slots[examination.kept].header);
   const bool copied = forEachStoredEntry(
-      dictionary_, group,
-      [&reader](uint8_t* address, size_t size) { return reader.read(address, size); });
+      dictionary_, group, [&reader](const od::EntryRef& /*ref*/, uint8_t* address, size_t size) {
+        return reader.read(address, size);
+      });
   if (copied && reader.matches()) {
-    shiftNodeIdRelative(dictionary_, group, +1);
+    addNodeIdAfterLoad(dictionary_, group);
     return StoreResult::kOk;
   }
   // The medium changed since it was checked: never leave a mix of old and new values.

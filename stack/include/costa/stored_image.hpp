@@ -28,7 +28,7 @@ struct ImageHeader {
   uint32_t crc;            ///< As stored; encodeImageHeader() does not use it.
 };
 
-inline constexpr uint8_t kImageFormatVersion = 1;
+inline constexpr uint8_t kImageFormatVersion = 2;  // 2: a moved $NODEID COB-ID is stored as it is
 inline constexpr size_t kImageHeaderSize = 28;
 inline constexpr size_t kImageMagicSize = 4;
 inline constexpr uint8_t kImageMagic[kImageMagicSize] = {'C', 'S', 'T', 'P'};
