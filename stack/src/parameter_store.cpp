@@ -29,52 +29,39 @@ bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit v
 // a node-id change never moves it onto a CAN-ID of another node or one CiA 301 restricts. A
 // COB-ID's flags never change.
 
-/// The CAN-ID bits of a COB-ID: 0..10, or 0..28 with bit 29 (a 29-bit frame).
-uint32_t canIdBits(uint64_t cobId) noexcept {
-  return (cobId & (uint32_t{1} << 29U)) != 0U ? 0x1FFFFFFFU : 0x7FFU;
-}
-
-/// The CAN-ID bits of `ref`'s default without the node-id, when `ref` is a COB-ID; else false.
-bool defaultCanId(const od::ObjectDictionary& dictionary, const od::EntryRef& ref, uint64_t value,
-                  uint32_t* canId) noexcept {
+/// The bits of the `$NODEID` entry `ref` that carry the node-id, given its value and that value
+/// without the node-id (`relative`): every bit of a number; of a COB-ID (an UNSIGNED32 of
+/// 0x1000..0x1FFF) its CAN-ID (bits 0..10, or 0..28 with bit 29) while that is its default's,
+/// else none.
+uint64_t nodeIdBits(const od::ObjectDictionary& dictionary, const od::EntryRef& ref, uint64_t value,
+                    uint64_t relative) noexcept {
   if (ref.size() != 4U || ref.index() < 0x1000U || ref.index() > 0x1FFFU) {
-    return false;
+    return ~uint64_t{0};
   }
   uint8_t bytes[4] = {};
   od::copyDefault(dictionary.definition(), ref, bytes);
   uint32_t base = 0;
   copyBytes(&base, bytes, sizeof(base));
-  *canId = base & canIdBits(value);
-  return true;
+  const uint32_t canId = (value & (uint32_t{1} << 29U)) != 0U ? 0x1FFFFFFFU : 0x7FFU;
+  return ((relative ^ base) & canId) == 0U ? canId : 0U;
 }
 
 /// What a save stores of the `$NODEID` entry `ref` whose value is `value`.
 uint64_t storedForm(const od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                     uint64_t value) noexcept {
-  const uint64_t id = dictionary.nodeId();
-  uint32_t canId = 0;
-  if (!defaultCanId(dictionary, ref, value, &canId)) {
-    return value - id;
-  }
-  const uint32_t bits = canIdBits(value);
-  return ((value - id) & bits) == canId ? (value & ~uint64_t{bits}) | canId : value;
+  const uint64_t relative = value - dictionary.nodeId();
+  const uint64_t bits = nodeIdBits(dictionary, ref, value, relative);
+  return (value & ~bits) | (relative & bits);
 }
 
 /// Adds the node-id to the `$NODEID` entries of `group` after a load (see storedForm()).
 void addNodeIdAfterLoad(od::ObjectDictionary& dictionary, uint8_t group) noexcept {
-  const uint64_t id = dictionary.nodeId();
   for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
-    if (ref.group() != group || !ref.has(od::kNodeIdRelative) ||
-        dictionary.ramAddress(ref) == nullptr) {
-      continue;
-    }
-    const uint64_t value = dictionary.readUnsigned(ref);
-    uint32_t canId = 0;
-    if (!defaultCanId(dictionary, ref, value, &canId)) {
-      dictionary.storeUnsigned(ref, value + id);
-    } else if ((value & canIdBits(value)) == canId) {
-      const uint32_t bits = canIdBits(value);
-      dictionary.storeUnsigned(ref, (value & ~uint64_t{bits}) | ((value + id) & bits));
+    if (ref.group() == group && ref.has(od::kNodeIdRelative) &&
+        dictionary.ramAddress(ref) != nullptr) {
+      const uint64_t value = dictionary.readUnsigned(ref);
+      const uint64_t bits = nodeIdBits(dictionary, ref, value, value);
+      dictionary.storeUnsigned(ref, (value & ~bits) | ((value + dictionary.nodeId()) & bits));
     }
   }
 }
