@@ -233,6 +233,76 @@ TEST_F(AnsweringTpdos, AnRpdoNotAcceptedIsNotAnswered) {
   )");
 }
 
+// Refuses every value of 0x2000 (RPDO1's first entry): RPDO1 is refused whole.
+class RefusingHook : public ObjectHook {
+ public:
+  AbortCode check(od::ObjectDictionary&, const od::EntryRef&, const uint8_t*,
+                  size_t) noexcept override {
+    return AbortCode::kValueTooHigh;
+  }
+};
+
+// TPDO1 with an inhibit time of 50 ms and an event timer of 20 ms, operational from 0 ms: sent by
+// its timer at 20 ms, inhibited until 70 ms; the timer expires again at 40 ms, within it.
+constexpr const char* kTimedTpdo1 = R"(
+    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 601 [8] 2B 00 18 03 F4 01 00 00   # inhibit 500 x 100 us = 50 ms
+    tx 581 [8] 60 00 18 03 00 00 00 00
+    rx 601 [8] 2B 00 18 05 14 00 00 00   # event timer 20 ms
+    tx 581 [8] 60 00 18 05 00 00 00 00
+    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 000 [2] 01 01
+    wait 20
+    tx 181 [6] xx xx xx xx D7 00         # the event timer; inhibited until 70 ms
+  )";
+
+TEST_F(AnsweringTpdos, ARefusedRpdoDoesNotTakeBackTheEventTimersTransmission) {
+  static RefusingHook refusing;
+  withNode([](Node& node) { ASSERT_TRUE(node.attachHook(0x2000, 0x2000, refusing)); });
+  EXPECT_TRANSCRIPT(kTimedTpdo1);
+  EXPECT_TRANSCRIPT(R"(
+    wait 30                              # 50 ms: the timer expired at 40 ms
+    rx 201 [5] 10 27 00 00 F6            # refused: its answer is taken back, not the timer's
+    silence
+    wait 19
+    silence
+    wait 1
+    tx 181 [6] xx xx xx xx D7 00         # 70 ms: the end of the inhibit time
+  )");
+  EXPECT_EQ(value(0x2000, 0), 1000U);  // nothing written
+}
+
+TEST_F(AnsweringTpdos, ARefusedRpdoDoesNotTakeBackAnApplicationsEvent) {
+  static RefusingHook refusing;
+  withNode([](Node& node) { ASSERT_TRUE(node.attachHook(0x2000, 0x2000, refusing)); });
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 601 [8] 2B 00 18 03 F4 01 00 00   # inhibit 500 x 100 us = 50 ms, no event timer
+    tx 581 [8] 60 00 18 03 00 00 00 00
+    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 000 [2] 01 01
+  )");
+  withNode([](Node& node) { ASSERT_TRUE(node.requestTpdo(0x1800)); });
+  EXPECT_TRANSCRIPT(R"(
+    tx 181 [6] xx xx xx xx D7 00         # at once; inhibited for 50 ms
+    wait 10
+  )");
+  withNode([](Node& node) { ASSERT_TRUE(node.requestTpdo(0x1800)); });  // waits for its end
+  EXPECT_TRANSCRIPT(R"(
+    wait 10
+    rx 201 [5] 10 27 00 00 F6            # refused: its answer is taken back, not that event
+    silence
+    wait 29
+    silence
+    wait 1
+    tx 181 [6] xx xx xx xx D7 00         # 50 ms: the end of the inhibit time
+  )");
+}
+
 TEST_F(AnsweringTpdos, NothingIsAnsweredOutsideOperational) {
   EXPECT_TRANSCRIPT(R"(
     rx 201 [5] 10 27 00 00 F6            # pre-operational: no PDO at all

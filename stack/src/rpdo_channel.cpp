@@ -38,7 +38,7 @@ void RpdoChannel::updateQuietDlc() noexcept {
 }
 
 void RpdoChannel::withdrawAnswer(PdoContext& context) const noexcept {
-  if (answer_ != 0U) {
+  if (answer_ != 0U && answerSignalled_) {
     context.tpdos[answer_ - 1U].withdrawEvent();
   }
 }
@@ -71,7 +71,7 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
   updateQuietDlc();
   if (answer_ != 0U) {
     // Taken: answered (withdrawn if an entry refuses).
-    context.tpdos[answer_ - 1U].signalEvent(context.clock);
+    answerSignalled_ = context.tpdos[answer_ - 1U].signalEvent(context.clock);
   }
   return true;
 }

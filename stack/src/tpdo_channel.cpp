@@ -57,11 +57,14 @@ void TpdoChannel::stop() noexcept {
   eventDeadline_ = kNever;
 }
 
-void TpdoChannel::signalEvent(NodeClock& clock) noexcept {
-  if (running_ && (type_ == 0U || eventDriven())) {
-    event_ = true;
-    clock.schedule(nextDeadline(clock.now));
+bool TpdoChannel::signalEvent(NodeClock& clock) noexcept {
+  if (!running_ || (type_ != 0U && !eventDriven())) {
+    return false;
   }
+  const bool raised = !event_;
+  event_ = true;
+  clock.schedule(nextDeadline(clock.now));
+  return raised;
 }
 
 void TpdoChannel::onOtherSync(PdoContext& context, uint8_t counter, Microseconds now,

@@ -71,7 +71,8 @@ class RpdoChannel {
     return true;
   }
   /// An answer signalled for a PDO that an entry then refused is taken back (the refusal is
-  /// rare and cold; the answer is signalled before the entries are written, see checkLength()).
+  /// rare and cold; the answer is signalled before the entries are written, see checkLength()),
+  /// unless the TPDO's event was pending already (the application's, or its event timer's).
   void withdrawAnswer(PdoContext& context) const noexcept;
   /// Applies the data held since the previous SYNC. False when an entry was refused.
   bool onSync(PdoContext& context) noexcept;
@@ -126,6 +127,8 @@ class RpdoChannel {
   /// The TPDO that answers every PDO taken (PdoProfile::tpdoAnswersRpdo): its channel in
   /// PdoContext::tpdos plus 1, or 0 for none (a byte, so that the channel keeps its size).
   uint8_t answer_ = 0;
+  /// The answer of the PDO being taken raised its TPDO's event (none was pending already).
+  bool answerSignalled_ = false;
   Microseconds deadline_ = kNever;
   PdoMap map_;
   uint8_t held_[PdoMap::kMaxBytes] = {};

@@ -56,8 +56,9 @@ class TpdoChannel {
   }
   /// A remote request: answered when the COB-ID allows RTR and the type does (profile).
   void onRemoteRequest(PdoContext& context, Microseconds now) noexcept;
-  /// The application changed mapped data (or asks for a transmission): an event.
-  void signalEvent(NodeClock& clock) noexcept;
+  /// The application changed mapped data (or asks for a transmission): an event. True when it
+  /// raised one that was not pending already.
+  bool signalEvent(NodeClock& clock) noexcept;
   /// Takes back an event signalled in the same moment (an answered RPDO that was refused).
   void withdrawEvent() noexcept { event_ = false; }
   bool maps(const od::EntryRef& ref) const noexcept { return map_.contains(ref); }
