@@ -116,6 +116,8 @@ TEST(LssNode, AStoredCobIdFollowsANewNodeIdOnlyAtItsDefaultCanId) {
     tx 589 [8] 60 14 10 00 00 00 00 00
     rx 609 [8] 23 00 14 01 09 02 00 80   # RPDO1: not valid, at its default CAN-ID 0x200 + 9
     tx 589 [8] 60 00 14 01 00 00 00 00
+    rx 609 [8] 23 01 14 01 00 03 00 80   # RPDO2: not valid, moved onto 0x300 itself
+    tx 589 [8] 60 01 14 01 00 00 00 00
     rx 609 [8] 23 10 10 02 73 61 76 65   # save the communication parameters
     tx 589 [8] 60 10 10 02 00 00 00 00
     rx 7E5 [8] 04 01 00 00 00 00 00 00
@@ -128,6 +130,14 @@ TEST(LssNode, AStoredCobIdFollowsANewNodeIdOnlyAtItsDefaultCanId) {
     tx 585 [8] 43 14 10 00 00 00 00 80
     rx 605 [8] 40 00 14 01 00 00 00 00   # at its default: follows the node-id, not valid
     tx 585 [8] 43 00 14 01 05 02 00 80
+    rx 605 [8] 40 01 14 01 00 00 00 00   # moved onto 0x300: stays there, not 0x305
+    tx 585 [8] 43 01 14 01 00 03 00 80
+    rx 000 [2] 81 05                     # reset node: node-id 9 again (the LSS one unstored)
+    tx 709 [1] 00
+    rx 609 [8] 40 01 14 01 00 00 00 00   # saved and loaded at 9: still 0x300
+    tx 589 [8] 43 01 14 01 00 03 00 80
+    rx 609 [8] 40 00 14 01 00 00 00 00
+    tx 589 [8] 43 00 14 01 09 02 00 80
   )",
                      bus),
             "");

@@ -152,6 +152,30 @@ INSTANTIATE_TEST_SUITE_P(Fields, ForeignImageTest,
                          });
 
 /// A medium whose reads fail from a given read on, or that changes a byte after a given read.
+// Format version 2 changed only how a $NODEID COB-ID is stored: a version 1 image of a region
+// without one (here the application parameters) still counts; one with them is incompatible.
+TEST_F(ParameterStoreDamageTest, AVersion1ImageCountsUnlessItHoldsANodeIdCobId) {
+  for (const uint8_t group : {kApplication, kCommunication}) {
+    const std::vector<uint8_t> payload = pattern(group, 1);
+    ImageHeader header{};
+    header.formatVersion = 1;
+    header.kind = ImageKind::kValues;
+    header.region = group;
+    header.layout = gen::example::kDefinition.layoutId;
+    header.location = static_cast<uint32_t>(slotOffset(group, 0));
+    header.sequence = 1;
+    header.payloadLength = static_cast<uint32_t>(payload.size());
+    craftImage(storage_, slotOffset(group, 0), slotSize(group), header, payload);
+    ASSERT_EQ(slot(group, 0).state, SlotState::kIntact);
+  }
+  const Loaded application = loadFresh(kApplication);
+  EXPECT_EQ(application.result, StoreResult::kOk);
+  EXPECT_EQ(application.bytes, pattern(kApplication, 1));
+  const Loaded communication = loadFresh(kCommunication);
+  EXPECT_EQ(communication.result, StoreResult::kIncompatible);
+  EXPECT_EQ(communication.bytes, defaults(kCommunication));
+}
+
 class FlakyStorage : public port::MemoryStorage {
  public:
   FlakyStorage(uint8_t* bytes, size_t size) : MemoryStorage(bytes, size) {}

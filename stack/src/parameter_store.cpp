@@ -24,34 +24,77 @@ bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit v
 // `$NODEID` entries (CiA 306: the default is `$NODEID + n`) follow the node-id across a save
 // and a load with another node-id. A number is stored without the node-id and gets the node-id
 // of the load. A COB-ID (an UNSIGNED32 of 0x1000..0x1FFF) follows the node-id only while its
-// CAN-ID is its default's: it is stored with the default's CAN-ID, to which a load adds the
-// node-id; a COB-ID whose CAN-ID a master moved elsewhere is stored and loaded as it is, so that
-// a node-id change never moves it onto a CAN-ID of another node or one CiA 301 restricts. A
-// COB-ID's flags never change.
+// CAN-ID is its default's: it is stored with the default's CAN-ID without the node-id (the base),
+// to which a load adds the node-id. A COB-ID whose CAN-ID a master moved elsewhere is stored and
+// loaded as it is, so that a node-id change never moves it onto a CAN-ID of another node or one
+// CiA 301 restricts; one moved onto the base itself is stored with bit 28 set, which a valid
+// 11-bit COB-ID never has, so that it does not read back as one at its default. A COB-ID's flags
+// never change; a 29-bit COB-ID (bit 29) and one with bits 11..28 set are stored as they are.
+constexpr uint32_t kStandardCanId = 0x7FFU;
+constexpr uint32_t kAsItIs = 0x3FFFF800U;        ///< bit 29, or bits 11..28 (reserved)
+constexpr uint32_t kMovedOntoBase = 1UL << 28U;  ///< in a stored image only
 
-/// The bits of the `$NODEID` entry `ref` that carry the node-id, given its value and that value
-/// without the node-id (`relative`): every bit of a number; of a COB-ID (an UNSIGNED32 of
-/// 0x1000..0x1FFF) its CAN-ID (bits 0..10, or 0..28 with bit 29) while that is its default's,
-/// else none.
-uint64_t nodeIdBits(const od::ObjectDictionary& dictionary, const od::EntryRef& ref, uint64_t value,
-                    uint64_t relative) noexcept {
-  if (ref.size() != 4U || ref.index() < 0x1000U || ref.index() > 0x1FFFU) {
-    return ~uint64_t{0};
+/// Whether the `$NODEID` entry `ref` is a COB-ID; if so, `*base` is its default's CAN-ID without
+/// the node-id.
+bool isCobId(const od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+             uint32_t* base) noexcept {
+  if (ref.type() != od::DataType::kUnsigned32 || ref.index() < 0x1000U || ref.index() > 0x1FFFU) {
+    return false;
   }
   uint8_t bytes[4] = {};
   od::copyDefault(dictionary.definition(), ref, bytes);
-  uint32_t base = 0;
-  copyBytes(&base, bytes, sizeof(base));
-  const uint32_t canId = (value & (uint32_t{1} << 29U)) != 0U ? 0x1FFFFFFFU : 0x7FFU;
-  return ((relative ^ base) & canId) == 0U ? canId : 0U;
+  copyBytes(base, bytes, sizeof(*base));
+  *base &= kStandardCanId;
+  return true;
 }
 
 /// What a save stores of the `$NODEID` entry `ref` whose value is `value`.
 uint64_t storedForm(const od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                     uint64_t value) noexcept {
-  const uint64_t relative = value - dictionary.nodeId();
-  const uint64_t bits = nodeIdBits(dictionary, ref, value, relative);
-  return (value & ~bits) | (relative & bits);
+  const uint8_t nodeId = dictionary.nodeId();
+  uint32_t base = 0;
+  if (!isCobId(dictionary, ref, &base)) {
+    return value - nodeId;
+  }
+  const auto cob = static_cast<uint32_t>(value);
+  const uint32_t canId = cob & kStandardCanId;
+  if ((cob & kAsItIs) != 0U) {
+    return cob;
+  }
+  if (canId == ((base + nodeId) & kStandardCanId)) {
+    return (cob & ~kStandardCanId) | base;  // at its default's: follows
+  }
+  return canId == base ? cob | kMovedOntoBase : cob;
+}
+
+/// The value of the `$NODEID` entry `ref` that a load read as `stored` (see storedForm()).
+uint64_t loadedForm(const od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                    uint64_t stored) noexcept {
+  const uint8_t nodeId = dictionary.nodeId();
+  uint32_t base = 0;
+  if (!isCobId(dictionary, ref, &base)) {
+    return stored + nodeId;
+  }
+  const auto cob = static_cast<uint32_t>(stored);
+  if ((cob & kStandardCanId) != base) {
+    return cob;
+  }
+  if ((cob & kAsItIs) == 0U) {
+    return (cob & ~kStandardCanId) | ((base + nodeId) & kStandardCanId);
+  }
+  return (cob & kAsItIs) == kMovedOntoBase ? cob & ~kMovedOntoBase : cob;
+}
+
+/// Whether the region `id` holds a `$NODEID` COB-ID: the one kind of entry whose stored form
+/// format version 2 changed (version 1 stored it without the node-id over all 32 bits).
+bool holdsNodeIdCobId(const od::ObjectDictionary& dictionary, uint16_t id) noexcept {
+  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
+    uint32_t base = 0;
+    if (ref.group() == id && ref.has(od::kNodeIdRelative) && isCobId(dictionary, ref, &base)) {
+      return true;
+    }
+  }
+  return false;  // a record region's id is never a group's (kRecordRegion)
 }
 
 /// Adds the node-id to the `$NODEID` entries of `group` after a load (see storedForm()).
@@ -59,9 +102,7 @@ void addNodeIdAfterLoad(od::ObjectDictionary& dictionary, uint8_t group) noexcep
   for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
     if (ref.group() == group && ref.has(od::kNodeIdRelative) &&
         dictionary.ramAddress(ref) != nullptr) {
-      const uint64_t value = dictionary.readUnsigned(ref);
-      const uint64_t bits = nodeIdBits(dictionary, ref, value, value);
-      dictionary.storeUnsigned(ref, (value & ~bits) | ((value + dictionary.nodeId()) & bits));
+      dictionary.storeUnsigned(ref, loadedForm(dictionary, ref, dictionary.readUnsigned(ref)));
     }
   }
 }
@@ -91,8 +132,13 @@ const char* toString(StoreResult result) noexcept {
 bool ParameterStore::isCurrent(const Region& region, size_t slot,
                                const SlotInfo& info) const noexcept {
   const ImageHeader& header = info.header;
-  if (info.state != SlotState::kIntact || header.formatVersion != kImageFormatVersion ||
-      header.region != region.id || header.location != slotOffset(region, slot)) {
+  if (info.state != SlotState::kIntact || header.region != region.id ||
+      header.location != slotOffset(region, slot)) {
+    return false;
+  }
+  // A version 1 image means the same as a version 2 one unless it holds a $NODEID COB-ID.
+  if (header.formatVersion != kImageFormatVersion &&
+      (header.formatVersion != 1U || holdsNodeIdCobId(dictionary_, region.id))) {
     return false;
   }
   if (header.kind == ImageKind::kDefaults) {
