@@ -170,14 +170,16 @@ TEST_F(FuzzRules, TheChecksRunAgainWhenAValueTheNodeIdOrTheStateChanges) {
   dictionary.storeUnsigned(0x2004, 2, 7);  // any value, even one within its limits
   EXPECT_FALSE(checked.same(node()));
   checked.remember(node(), allowed);
-  target_.onFrame(frame(0x000, {0x01, 0x01}), 0);  // operational: same values, another state
+  auto* values = static_cast<uint8_t*>(dictionary.values());
+  std::vector<uint8_t> before(values, values + dictionary.definition().valuesSize);
+  target_.onFrame(frame(0x000, {0x01, 0x01}), 0);  // operational
+  memcpy(values, before.data(), before.size());    // the same values: only the state differs
   EXPECT_FALSE(checked.same(node()));
   allowed = allowedTransmitIds(node(), true);
   checked.remember(node(), allowed);
   EXPECT_TRUE(checked.allowed().contains(0x181));  // the TPDOs' ids now
   target_.onFrame(frame(0x000, {0x80, 0x00}), 0);  // pre-operational
-  auto* values = static_cast<uint8_t*>(dictionary.values());
-  const std::vector<uint8_t> before(values, values + dictionary.definition().valuesSize);
+  before.assign(values, values + dictionary.definition().valuesSize);
   checked.remember(node(), allowedTransmitIds(node(), true));
   target_.onFrame(frame(0x7E5, {0x04, 0x01, 0, 0, 0, 0, 0, 0}), 0);  // LSS configuration
   target_.onFrame(frame(0x7E5, {0x11, 0x05, 0, 0, 0, 0, 0, 0}), 0);  // pending node-id 5
