@@ -243,6 +243,7 @@ TEST(NodeContractMapping, AnUnresolvableMappingEmptiesThePdoAndIsCounted) {
   EXPECT_EQ(playText(R"(
     rx 601 [8] 23 00 14 01 01 02 00 80   # invalidate RPDO1
     tx 581 [8] 60 00 14 01 00 00 00 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # configured again: its length error no longer applies
     rx 601 [8] 2F 00 16 00 00 00 00 00
     tx 581 [8] 60 00 16 00 00 00 00 00
     rx 601 [8] 23 00 16 01 20 00 00 20
@@ -251,8 +252,8 @@ TEST(NodeContractMapping, AnUnresolvableMappingEmptiesThePdoAndIsCounted) {
     tx 581 [8] 60 00 16 00 00 00 00 00
     rx 601 [8] 23 00 14 01 01 02 00 00
     tx 581 [8] 60 00 14 01 00 00 00 00
-    rx 201 [5] 10 27 00 00 F6
-    tx 081 [8] 00 00 00 00 00 00 00 00   # the right length clears the length error
+    rx 201 [5] 10 27 00 00 F6            # the right length: no EMCY
+    silence
   )",
                      bus),
             "");

@@ -105,6 +105,43 @@ TEST_F(Rpdo, EventTimerMonitorsTheDeadlineWithEmcy8250) {
   )");
 }
 
+// The missed deadline stays an error while the node is not operational, until a PDO comes.
+TEST_F(Rpdo, AMissedDeadlineOutlivesLeavingOperationalUntilAPdoArrives) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 00 14 05 64 00 00 00   # event timer 100 ms
+    tx 581 [8] 60 00 14 05 00 00 00 00
+    rx 000 [2] 01 01
+    rx 201 [5] 10 27 00 00 00
+    wait 100
+    tx 081 [8] 50 82 11 00 00 00 00 00
+    rx 000 [2] 80 01                     # pre-operational
+    rx 000 [2] 01 01                     # operational again
+    rx 601 [8] 40 01 10 00 00 00 00 00
+    tx 581 [8] 4F 01 10 00 11 00 00 00   # still an error
+    rx 201 [5] 10 27 00 00 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # the PDO came: no error left
+  )");
+}
+
+// Reset communication configures the PDO again (its event timer back to 0): the errors its old
+// parameters raised no longer apply.
+TEST_F(Rpdo, ResetCommunicationClearsTheErrorsOfTheOldParameters) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 00 14 05 64 00 00 00   # event timer 100 ms
+    tx 581 [8] 60 00 14 05 00 00 00 00
+    rx 000 [2] 01 01
+    rx 201 [6] 10 27 00 00 00 00         # too long: EMCY 0x8220
+    tx 081 [8] 20 82 11 00 00 00 00 00
+    wait 100
+    tx 081 [8] 50 82 11 00 00 00 00 00
+    rx 000 [2] 82 01
+    tx 701 [1] 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # after the boot-up: both errors gone
+    rx 601 [8] 40 01 10 00 00 00 00 00
+    tx 581 [8] 4F 01 10 00 00 00 00 00
+  )");
+}
+
 TEST_F(Rpdo, DummyEntriesSkipBytes) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 02 16 00 00 00 00 00   # RPDO3 mapping: disable

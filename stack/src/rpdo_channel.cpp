@@ -17,6 +17,7 @@ bool RpdoChannel::configure(PdoContext& context) noexcept {
   type_ = static_cast<uint8_t>(dictionary.readUnsigned32(index_, 2, 255));
   eventTimerMs_ = static_cast<uint16_t>(dictionary.readUnsigned32(index_, 5, 0));
   stop();
+  clearConditions(context);
   return resolveMapping(context);
 }
 
@@ -46,7 +47,20 @@ void RpdoChannel::withdrawAnswer(PdoContext& context) const noexcept {
 void RpdoChannel::stop() noexcept {
   holding_ = false;
   deadline_ = kNever;
+}
+
+void RpdoChannel::clearConditions(PdoContext& context) noexcept {
+  const uint16_t raised[] = {timedOut_ ? kEmcyTimeout : uint16_t{0},
+                             tooShort_ ? kEmcyLengthShort : uint16_t{0},
+                             tooLong_ ? kEmcyLengthLong : uint16_t{0}};
   timedOut_ = false;
+  tooShort_ = false;
+  tooLong_ = false;
+  for (const uint16_t code : raised) {
+    if (code != 0U) {
+      context.emcy.clear(code, source());
+    }
+  }
 }
 
 bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {

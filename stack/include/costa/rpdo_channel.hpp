@@ -33,8 +33,9 @@ class RpdoChannel {
   void answerWith(size_t tpdoChannel) noexcept { answer_ = static_cast<uint8_t>(tpdoChannel + 1U); }
   uint16_t communicationIndex() const noexcept { return index_; }
 
-  /// Reads the communication parameters and resolves the mapping; drops held data. False when
-  /// the mapping could not be resolved (the PDO then carries nothing). O(entries x log objects).
+  /// Reads the communication parameters and resolves the mapping; drops held data and clears
+  /// the EMCY conditions (0x8210, 0x8220, 0x8250) the old parameters raised. False when the
+  /// mapping could not be resolved (the PDO then carries nothing). O(entries x log objects).
   bool configure(PdoContext& context) noexcept;
   /// Resolves the mapping again (a hook was attached). Same result as configure().
   bool resolveMapping(PdoContext& context) noexcept;
@@ -81,7 +82,8 @@ class RpdoChannel {
   /// within it after the first one.
   void process(PdoContext& context, Microseconds now) noexcept;
   Microseconds nextDeadline() const noexcept { return timedOut_ ? kNever : deadline_; }
-  /// Leaving operational: held data and monitoring stop.
+  /// Leaving operational: held data and monitoring stop. A missed deadline stays an error
+  /// (EMCY 0x8250) until a PDO arrives or the PDO is configured again.
   void stop() noexcept;
 
  private:
@@ -105,6 +107,8 @@ class RpdoChannel {
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoReceived(index); });
   }
   void restartDeadline(PdoContext& context, Microseconds now) noexcept;
+  /// Clears the EMCY conditions this PDO raised (reconfigured: they no longer apply).
+  void clearConditions(PdoContext& context) noexcept;
   void updateQuietDlc() noexcept;
   /// Raises or clears EMCY 0x8210/0x8220 for a frame of `dlc` bytes; looks nothing up while
   /// the length stays right. False for a frame too short to apply. A frame that will be taken
