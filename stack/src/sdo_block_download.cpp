@@ -23,8 +23,9 @@ constexpr uint8_t kLastSegment = 0x80;
 }  // namespace
 
 AbortCode SdoBlockDownload::start(const od::EntryRef& ref, const uint8_t* request) noexcept {
-  const size_t size =
-      (request[0] & kClientSizeIndicated) != 0U ? loadU32(request + 4) : kSizeNotIndicated;
+  const size_t size = (request[0] & kClientSizeIndicated) != 0U
+                          ? indicatedSize(loadU32(request + 4))
+                          : kSizeNotIndicated;
   const AbortCode begun = writer_.begin(ref, size);
   if (begun != AbortCode::kNone) {
     return begun;
@@ -40,6 +41,7 @@ AbortCode SdoBlockDownload::start(const od::EntryRef& ref, const uint8_t* reques
 }
 
 AbortCode SdoBlockDownload::onRequest(const uint8_t* request) noexcept {
+  droppedLast_ = false;
   switch (phase_) {
     case Phase::kSegments: return segment(request);
     case Phase::kEnd: return end(request);
@@ -59,6 +61,8 @@ AbortCode SdoBlockDownload::segment(const uint8_t* request) noexcept {
     // makes the client repeat from the last segment received in sequence.
     if (last || sequence == blockSize_) {
       acknowledge(lastSequence_);
+    } else {
+      droppedLast_ = true;
     }
     return AbortCode::kNone;
   }

@@ -150,7 +150,7 @@ void SdoServer::initiateSegmentedDownload(const uint8_t* request, Microseconds n
     return;
   }
   const AbortCode begun =
-      writer_.begin(ref_, sizeIndicated ? loadU32(request + 4) : kSizeNotIndicated);
+      writer_.begin(ref_, sizeIndicated ? indicatedSize(loadU32(request + 4)) : kSizeNotIndicated);
   if (begun != AbortCode::kNone) {
     sendAbort(index_, subIndex_, begun);
     return;

@@ -19,6 +19,11 @@ struct ReadRequest {
 
 /// `indicatedSize` of ObjectHook::writeStream() when the client did not indicate the size.
 inline constexpr size_t kSizeNotIndicated = SIZE_MAX;
+/// The size a client indicated on the wire: itself, but never kSizeNotIndicated (a 32-bit
+/// size_t would take 0xFFFFFFFF for it; one byte less is refused as too long all the same).
+inline constexpr size_t indicatedSize(uint32_t wireSize) noexcept {
+  return wireSize < kSizeNotIndicated ? wireSize : kSizeNotIndicated - 1U;
+}
 
 /// Attached to a range of indices with `Node::attachHook()`. The default implementation of each
 /// function is the plain dictionary behaviour, so a hook overrides only what it changes.
