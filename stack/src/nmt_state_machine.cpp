@@ -138,6 +138,7 @@ void NmtStateMachine::setState(NmtState state) noexcept {
   if (state == NmtState::kStopped) {
     services_.sdo.reset();
     services_.sdoServers.reset();
+    services_.tx.discardQueued();  // answers, PDOs, EMCY that waited may not leave any more
   }
   if (previous == NmtState::kOperational) {
     services_.pdos.stop();
