@@ -55,6 +55,25 @@ TEST_F(Sync, ProducerSendsEveryPeriodWithItsCounter) {
   )");
 }
 
+TEST_F(Sync, TheProducersCounterStartsOverAfterStopped) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 19 10 00 03 00 00 00   # counter 1..3
+    tx 581 [8] 60 19 10 00 00 00 00 00
+    rx 601 [8] 23 06 10 00 10 27 00 00   # period 10000 us
+    tx 581 [8] 60 06 10 00 00 00 00 00
+    rx 601 [8] 23 05 10 00 80 00 00 40   # bit 30: this node produces
+    tx 581 [8] 60 05 10 00 00 00 00 00
+    wait 10
+    tx 080 [1] 01
+    wait 10
+    tx 080 [1] 02
+    rx 000 [2] 02 01                     # stopped before the next one is due
+    rx 000 [2] 80 01                     # pre-operational
+    wait 10
+    tx 080 [1] 01                        # from 1 again, not 3
+  )");
+}
+
 TEST_F(Sync, TheProducersOwnSyncDrivesItsSynchronousPdos) {
   EXPECT_TRANSCRIPT(std::string(kTpdo1EverySync) + R"(
     rx 601 [8] 23 06 10 00 10 27 00 00

@@ -139,6 +139,7 @@ void NmtStateMachine::setState(NmtState state) noexcept {
     services_.sdo.reset();
     services_.sdoServers.reset();
     services_.tx.discardQueued();  // answers, PDOs, EMCY that waited may not leave any more
+    services_.sync.restartCounter();
   }
   if (previous == NmtState::kOperational) {
     services_.pdos.stop();

@@ -37,6 +37,8 @@ class SyncService : public ObjectHook {
 
   /// Reads 0x1005/0x1006/0x1007/0x1019 (after a reset communication, or a write).
   void configure(Microseconds now) noexcept;
+  /// Entering stopped: the producer's counter starts over at 1 when SYNC production resumes.
+  void restartCounter() noexcept { counter_ = 1; }
 
   /// True for a frame on the SYNC COB-ID (consumer side).
   bool accepts(const CanFrame& frame) const noexcept {
