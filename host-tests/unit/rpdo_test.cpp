@@ -70,6 +70,32 @@ TEST_F(Rpdo, SynchronousDataWaitsForTheNextSync) {
   EXPECT_EQ(value(0x2000, 0), 30000U);
 }
 
+// CiA 301, 0x1007: after the SYNC window, synchronous RPDOs are discarded until the next SYNC.
+TEST_F(Rpdo, SynchronousDataAfterTheSyncWindowIsDiscarded) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 00 14 02 01 00 00 00   # RPDO1 type 1
+    tx 581 [8] 60 00 14 02 00 00 00 00
+    rx 601 [8] 23 07 10 00 E8 03 00 00   # SYNC window 1000 us
+    tx 581 [8] 60 07 10 00 00 00 00 00
+    rx 000 [2] 01 01
+    rx 080 [0]
+    rx 201 [5] 10 27 00 00 00            # within the window: held
+    rx 080 [0]
+  )");
+  EXPECT_EQ(value(0x2000, 0), 10000U);
+  EXPECT_TRANSCRIPT(R"(
+    wait 2
+    rx 201 [5] 20 4E 00 00 00            # 2 ms after the SYNC: discarded
+    rx 080 [0]
+  )");
+  EXPECT_EQ(value(0x2000, 0), 10000U);
+  EXPECT_TRANSCRIPT(R"(
+    rx 201 [5] 30 75 00 00 00            # the next SYNC opened a window again
+    rx 080 [0]
+  )");
+  EXPECT_EQ(value(0x2000, 0), 30000U);
+}
+
 TEST_F(Rpdo, HeldDataIsDroppedWhenLeavingOperational) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 00 14 02 00 00 00 00   # type 0

@@ -78,6 +78,7 @@ void PdoEngine::refreshMappings() noexcept {
 
 void PdoEngine::start(Microseconds now) noexcept {
   running_ = true;
+  context_.syncWindowEnd = kNever;
   for (size_t i = 0; i < tpdoCount_; ++i) {
     tpdos_[i].start(context_, now, context_.profile.tpdoOnEnteringOperational);
   }
@@ -102,6 +103,7 @@ bool PdoEngine::remoteRequest(size_t channel, Microseconds now) noexcept {
 }
 
 void PdoEngine::onSync(uint8_t counter, Microseconds now, Microseconds windowEnd) noexcept {
+  context_.syncWindowEnd = windowEnd;
   if (!running_) {
     return;
   }

@@ -42,6 +42,9 @@ struct PdoContext {
   FrameRouter& routes;  ///< told when a PDO's CAN-ID or validity changes
   /// The TPDO channels (set by PdoEngine::bind()): an RPDO's answering TPDO is one of them.
   TpdoChannel* tpdos = nullptr;
+  /// The end of the last SYNC's window (0x1007; kNever without one): a synchronous RPDO that
+  /// arrives from then on is discarded until the next SYNC (CiA 301).
+  Microseconds syncWindowEnd = kNever;
 };
 
 /// A decoded PDO COB-ID (sub-index 1 of a communication parameter).

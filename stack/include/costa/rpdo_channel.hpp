@@ -52,8 +52,9 @@ class RpdoChannel {
 
   /// A received PDO (node operational). Too few bytes: EMCY 0x8210, nothing applied. More bytes
   /// than mapped: the mapped bytes are applied and EMCY 0x8220 is raised (cleared by the next
-  /// PDO of the right length). Types 0..240 hold the data until the next SYNC; 254/255 apply it
-  /// at once. False when an entry was refused (nothing written).
+  /// PDO of the right length). Types 0..240 hold the data until the next SYNC (discarded after
+  /// the SYNC window, 0x1007); 254/255 apply it at once. False when an entry was refused
+  /// (nothing written).
   COSTA_HOT_INLINE bool onFrame(PdoContext& context, const CanFrame& frame,
                                 Microseconds now) noexcept {
     if (frame.dlc != quietDlc_ && !checkLength(context, frame.dlc)) {
@@ -65,7 +66,7 @@ class RpdoChannel {
     if (type_ >= 254U) {
       return apply(context, frame.data);
     }
-    if (type_ <= 240U) {
+    if (type_ <= 240U && !reached(now, context.syncWindowEnd)) {
       copyBytes(held_, frame.data, sizeof(held_));
       holding_ = true;
     }
