@@ -109,6 +109,36 @@ TEST_F(Tpdo, AnEventTimerThatExpiresWithinTheInhibitTimeSendsWhenItEnds) {
   });
 }
 
+// A parameter written while operational (the event timer may change while the PDO is valid)
+// restarts the PDO's timers, but keeps its waiting event and its running inhibit time.
+TEST_F(Tpdo, WritingTheEventTimerKeepsAWaitingEventAndTheInhibitTime) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 601 [8] 2B 00 18 03 F4 01 00 00   # inhibit 500 x 100 us = 50 ms
+    tx 581 [8] 60 00 18 03 00 00 00 00
+    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 000 [2] 01 01
+  )");
+  withNode([](Node& node) { ASSERT_TRUE(node.requestTpdo(0x1800)); });
+  EXPECT_TRANSCRIPT(R"(
+    tx 181 [6] xx xx xx xx D7 00         # at once; inhibited for 50 ms
+    wait 10
+  )");
+  withNode([](Node& node) { ASSERT_TRUE(node.requestTpdo(0x1800)); });  // waits for its end
+  EXPECT_TRANSCRIPT(R"(
+    wait 10
+    rx 601 [8] 2B 00 18 05 64 00 00 00   # event timer 100 ms, while valid
+    tx 581 [8] 60 00 18 05 00 00 00 00
+    silence                              # the inhibit time still runs
+    wait 29
+    silence
+    wait 1
+    tx 181 [6] xx xx xx xx D7 00         # 50 ms: the event that waited
+  )");
+}
+
 TEST_F(Tpdo, SynchronousCyclicEveryNthSync) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 00 18 02 03 00 00 00   # every 3rd SYNC

@@ -206,7 +206,7 @@ AbortCode PdoEngine::writeParameter(Channel& channel, bool mapping,
   }
   if constexpr (!kReceive) {
     if (running_) {
-      channel.start(context_, context_.clock.now, false);
+      channel.restart(context_, context_.clock.now);
     }
   }
   context_.routes.invalidate();

@@ -50,6 +50,17 @@ void TpdoChannel::start(PdoContext& context, Microseconds now, bool initialEvent
   }
 }
 
+void TpdoChannel::restart(PdoContext& context, Microseconds now) noexcept {
+  const bool pending = event_;
+  const Microseconds inhibitEnd = inhibitUntil_;
+  start(context, now, false);
+  if (eventDriven()) {
+    event_ = pending && valid_;
+    inhibitUntil_ = inhibitEnd;  // the transmission before the write still inhibits the next
+    context.clock.schedule(nextDeadline(now));
+  }
+}
+
 void TpdoChannel::stop() noexcept {
   running_ = false;
   updateSyncPeriod();

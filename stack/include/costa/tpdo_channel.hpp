@@ -34,9 +34,12 @@ class TpdoChannel {
   /// Sends at SYNCs (types 0..240) or samples at them (252).
   bool synchronous() const noexcept { return type_ <= 240U || type_ == 252U; }
 
-  /// Entering operational (or reconfigured while operational): SYNC counting restarts, the
-  /// event timer starts, and an event-driven PDO is sent once when `initialEvent`.
+  /// Entering operational: SYNC counting restarts, the event timer starts, and an event-driven
+  /// PDO is sent once when `initialEvent`.
   void start(PdoContext& context, Microseconds now, bool initialEvent) noexcept;
+  /// Reconfigured while operational (a parameter written): starts again like start(), but an
+  /// event still waiting (while the PDO stays valid) and a running inhibit time are kept.
+  void restart(PdoContext& context, Microseconds now) noexcept;
   void stop() noexcept;
 
   /// A SYNC with `counter` (0 when the SYNC carries none). Synchronous PDOs are sent with
