@@ -57,6 +57,20 @@ TEST_F(TransmitFlood, StoppingDiscardsWhatWaited) {
   EXPECT_EQ(bus_.node().statistics().txDiscarded, kDepth);
 }
 
+TEST_F(TransmitFlood, StoppingKeepsTheErrorControlFramesThatWaited) {
+  bus_.can().setAccepting(false);
+  EXPECT_TRANSCRIPT("rx 000 [2] 82 01");  // reset communication: the boot-up waits
+  flood(bus_, 3);                         // and three SDO answers behind it
+  EXPECT_TRANSCRIPT("rx 000 [2] 02 01");  // stopped at once, as masters do
+  bus_.can().setAccepting(true);
+  EXPECT_TRANSCRIPT(R"(
+    wait 1
+    tx 701 [1] 00                        # the boot-up still leaves
+    silence                              # the SDO answers do not
+  )");
+  EXPECT_EQ(bus_.node().statistics().txDiscarded, 3U);
+}
+
 TEST_F(TransmitFlood, TheBootUpOfAResetNodeIsNotLostInAFullQueue) {
   flood(bus_, 3 * kDepth);
   EXPECT_TRANSCRIPT("rx 000 [2] 81 01");  // reset node while the queue is full

@@ -30,7 +30,8 @@ AbortCode StoreCommands::prepareRead(od::ObjectDictionary& dictionary, const od:
   if (ref.subIndex() != 0U) {
     const bool able =
         store_ != nullptr && store_->isLaidOut() && groupsOf(ref.index(), ref.subIndex()) != 0U;
-    dictionary.storeUnsigned(ref, able ? 1U : 0U);
+    const bool autonomous = savesOnWrite_ && ref.index() == kStoreIndex;
+    dictionary.storeUnsigned(ref, !able ? 0U : autonomous ? 3U : 1U);
   }
   return AbortCode::kNone;
 }

@@ -17,7 +17,8 @@ StoredParameters::StoredParameters(od::ObjectDictionary& dictionary, const NodeS
       store_(dictionary, settings.storage != nullptr ? *settings.storage : noStorage_,
              settings.storageSlotAlignment),
       commands_(settings.storage != nullptr ? &store_ : nullptr, settings.storeAllGroups,
-                settings.restoreAllGroups) {
+                settings.restoreAllGroups,
+                features::kParameterStorage && settings.saveParametersOnWrite) {
   commands_.setRestoreAllListener(this);
 }
 

@@ -4,11 +4,12 @@
 // Sub-indices: 1 = every group the device saves on command (NodeSettings::storeAllGroups),
 // 2 = communication (group 1), 3 = application (group 2), n >= 4 = group n. Reading a
 // sub-index gives the CiA 301 capability: 1 (saves on command) when the store holds one of its
-// groups, 0 otherwise. Writing "save" (0x65766173) to 0x1010 saves the groups; writing "load"
-// (0x64616F6C) to 0x1011 stores "restore defaults" markers, so the defaults come back at the
-// next reset node / reset communication. Any other value aborts 0x08000020, as does a sub-index
-// without groups or a failing medium; a sub-index the dictionary does not declare aborts
-// 0x06090011 before it reaches this hook.
+// groups, 0 otherwise; 0x1010 adds bit 1 (saves autonomously) when a written entry's group is
+// saved at once (NodeSettings::saveParametersOnWrite). Writing "save" (0x65766173) to 0x1010 saves
+// the groups; writing "load" (0x64616F6C) to 0x1011 stores "restore defaults" markers, so the
+// defaults come back at the next reset node / reset communication. Any other value aborts
+// 0x08000020, as does a sub-index without groups or a failing medium; a sub-index the dictionary
+// does not declare aborts 0x06090011 before it reaches this hook.
 //
 // Sub-index 1 saves (or restores) its groups one after the other, by ascending number, each
 // atomically (docs/storage.md): a power loss in the middle leaves every group entirely old or
@@ -46,9 +47,14 @@ class StoreCommands : public ObjectHook {
     RestoreAllListener& operator=(RestoreAllListener&&) = default;
   };
 
-  /// `store` may be null (no storage: every capability reads 0).
-  StoreCommands(ParameterStore* store, uint32_t saveAllGroups, uint32_t restoreAllGroups) noexcept
-      : store_(store), saveAll_(saveAllGroups), restoreAll_(restoreAllGroups) {}
+  /// `store` may be null (no storage: every capability reads 0). `savesOnWrite`: the node saves
+  /// a written entry's group at once (0x1010 reads bit 1 too).
+  StoreCommands(ParameterStore* store, uint32_t saveAllGroups, uint32_t restoreAllGroups,
+                bool savesOnWrite = false) noexcept
+      : store_(store),
+        saveAll_(saveAllGroups),
+        restoreAll_(restoreAllGroups),
+        savesOnWrite_(savesOnWrite) {}
 
   void setRestoreAllListener(RestoreAllListener* listener) noexcept { listener_ = listener; }
   void setStore(ParameterStore* store) noexcept { store_ = store; }
@@ -65,6 +71,7 @@ class StoreCommands : public ObjectHook {
   ParameterStore* store_;
   uint32_t saveAll_;
   uint32_t restoreAll_;
+  bool savesOnWrite_;
   RestoreAllListener* listener_ = nullptr;
 };
 
