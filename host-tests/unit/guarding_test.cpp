@@ -67,6 +67,24 @@ TEST_F(Guarding, LifeTimeExpiryRaisesEmcy8130AndEntersPreOperational) {
   EXPECT_EQ(events.resumed, 1);
 }
 
+TEST_F(Guarding, ResetCommunicationClearsALifeGuardingError) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 0C 10 00 64 00 00 00   # guard time 100 ms
+    tx 581 [8] 60 0C 10 00 00 00 00 00
+    rx 601 [8] 2F 0D 10 00 03 00 00 00   # life time factor 3: life time 300 ms
+    tx 581 [8] 60 0D 10 00 00 00 00 00
+    rx 701 [0] RTR
+    tx 701 [1] 7F
+    wait 300
+    tx 081 [8] 30 81 11 00 00 00 00 00
+    rx 000 [2] 82 01
+    tx 701 [1] 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # life guarding starts over: no error left
+    rx 601 [8] 40 01 10 00 00 00 00 00
+    tx 581 [8] 4F 01 10 00 00 00 00 00
+  )");
+}
+
 TEST_F(Guarding, ErrorBehaviourNoChangeOrStopped) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2B 0C 10 00 0A 00 00 00

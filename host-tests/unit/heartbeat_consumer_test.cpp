@@ -44,6 +44,23 @@ TEST_F(HeartbeatConsumerTest, TimeoutAfterTheFirstHeartbeatAndReturn) {
   EXPECT_EQ(events.lastResumed, 5U);
 }
 
+// Reset communication starts monitoring over (0x1016 back to its default): the error it found
+// is gone with it.
+TEST_F(HeartbeatConsumerTest, ResetCommunicationClearsATimeoutsError) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5, 100 ms
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 705 [1] 05
+    wait 100
+    tx 081 [8] 30 81 11 05 00 00 00 00
+    rx 000 [2] 82 01
+    tx 701 [1] 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # no error left
+    rx 601 [8] 40 01 10 00 00 00 00 00
+    tx 581 [8] 4F 01 10 00 00 00 00 00
+  )");
+}
+
 TEST_F(HeartbeatConsumerTest, EntriesWithNodeIdZeroOrTimeZeroAreDisabled) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 23 16 10 01 00 00 05 00   # time 0

@@ -20,6 +20,17 @@ ErrorControl::ErrorControl(od::ObjectDictionary& dictionary, const ErrorControlP
       consumer_(dictionary, monitors, monitorCapacity) {}
 
 void ErrorControl::reset(uint8_t nodeId) noexcept {
+  // Monitoring starts over: the errors it had found are gone with it (EMCY 0x8130 cleared).
+  if (profile_.emcyForErrors) {
+    if (guarding_.expired()) {
+      emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
+    }
+    for (uint8_t entry = 1; consumer_.monitor(entry) != nullptr; ++entry) {
+      if (consumer_.monitor(entry)->timedOut) {
+        emcy_.clear(kEmcyLifeGuardOrHeartbeat, entry);
+      }
+    }
+  }
   guarding_.reset(nodeId, profile_.guardToggleStart);
   consumer_.configure(true);
 }
