@@ -85,6 +85,29 @@ TEST_F(Guarding, ResetCommunicationClearsALifeGuardingError) {
   )");
 }
 
+// CiA 301 7.2.8.3.2: with a heartbeat producer time the heartbeat protocol is used; a guarding
+// request is not answered and starts no life guarding.
+TEST_F(Guarding, NoGuardingWhileTheHeartbeatProducerRuns) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 0C 10 00 64 00 00 00   # guard time 100 ms
+    tx 581 [8] 60 0C 10 00 00 00 00 00
+    rx 601 [8] 2F 0D 10 00 03 00 00 00   # life time factor 3
+    tx 581 [8] 60 0D 10 00 00 00 00 00
+    rx 601 [8] 2B 17 10 00 E8 03 00 00   # heartbeat every 1000 ms
+    tx 581 [8] 60 17 10 00 00 00 00 00
+    rx 701 [0] RTR
+    silence                              # not answered
+    wait 999
+    silence                              # no life guarding either
+    wait 1
+    tx 701 [1] 7F                        # the heartbeat
+    rx 601 [8] 2B 17 10 00 00 00 00 00   # heartbeat off: guarding again
+    tx 581 [8] 60 17 10 00 00 00 00 00
+    rx 701 [0] RTR
+    tx 701 [1] 7F
+  )");
+}
+
 TEST_F(Guarding, ErrorBehaviourNoChangeOrStopped) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2B 0C 10 00 0A 00 00 00

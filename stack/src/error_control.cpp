@@ -40,7 +40,10 @@ bool ErrorControl::onFrame(const CanFrame& frame, uint8_t nodeId) noexcept {
     if (!features::kNodeGuarding || !profile_.nodeGuarding) {
       return false;  // a node without node guarding does not answer remote requests
     }
+    // CiA 301 7.2.8.3.2: with a heartbeat producer time, the heartbeat protocol is used, not
+    // node guarding: a request is not answered and starts no life guarding.
     if (frame.id == cob::kErrorControlBase + nodeId &&
+        dictionary_.readUnsigned32(kHeartbeatProducerIndex, 0, 0) == 0U &&
         guarding_.onRequest(nmt_.state(), clock_.now) == NodeGuarding::Event::kResumed) {
       if (profile_.emcyForErrors) {
         emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);

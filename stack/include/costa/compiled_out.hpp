@@ -105,6 +105,7 @@ class AbsentNodeGuarding final : public AbsentService {
     return NodeGuarding::Event::kNone;
   }
   Microseconds nextDeadline() const noexcept { return kNever; }
+  static bool expired() noexcept { return false; }
 };
 
 /// Heartbeat consumer compiled out: other nodes' heartbeats are not monitored; no 0x1016.
@@ -230,10 +231,11 @@ inline ParameterStore* parameterStoreOf(AbsentParameterStore& store) noexcept {
 class AbsentStoreCommands final : public AbsentService {
  public:
   AbsentStoreCommands(AbsentParameterStore* store, uint32_t saveAllGroups,
-                      uint32_t restoreAllGroups) noexcept {
+                      uint32_t restoreAllGroups, bool savesOnWrite) noexcept {
     (void)store;
     (void)saveAllGroups;
     (void)restoreAllGroups;
+    (void)savesOnWrite;
   }
   void setRestoreAllListener(StoreCommands::RestoreAllListener* listener) noexcept {
     (void)listener;

@@ -32,6 +32,7 @@ class ErrorControl {
       ServiceIf<features::kHeartbeatConsumer, HeartbeatConsumer, AbsentHeartbeatConsumer>;
 
   static constexpr uint16_t kErrorBehaviourIndex = 0x1029;
+  static constexpr uint16_t kHeartbeatProducerIndex = 0x1017;
   static constexpr uint16_t kEmcyLifeGuardOrHeartbeat = 0x8130;
   static constexpr uint16_t kEmcyRxOverrun = 0x8110;
   static constexpr uint16_t kEmcyErrorPassive = 0x8120;
