@@ -29,6 +29,7 @@ class StoreRestore : public ::testing::Test {
   void powerOn(NodeEvents* events = nullptr) {
     bus_.reset();
     NodeSettings settings = example::ExampleTarget::settings();
+    settings.saveParametersOnWrite = savesOnWrite_;
     settings.storage = &storage_;
     settings.storageSlotAlignment = alignment_;
     auto factory = exampleWith(settings);
@@ -48,6 +49,7 @@ class StoreRestore : public ::testing::Test {
 
   port::MemoryStorageOf<16384> storage_;
   size_t alignment_ = 1;
+  bool savesOnWrite_ = false;
   std::unique_ptr<InProcessBus> bus_;
 };
 
@@ -67,6 +69,20 @@ TEST_F(StoreRestore, CapabilitiesAreReadable) {
     rx 601 [8] 40 11 10 02 00 00 00 00
     tx 581 [8] 43 11 10 02 01 00 00 00
   )");
+}
+
+TEST_F(StoreRestore, ANodeThatSavesEveryWriteShowsItIn1010) {
+  savesOnWrite_ = true;
+  powerOn();
+  EXPECT_EQ(play(R"(
+    rx 601 [8] 40 10 10 01 00 00 00 00
+    tx 581 [8] 43 10 10 01 03 00 00 00   # on command and autonomously
+    rx 601 [8] 40 10 10 03 00 00 00 00
+    tx 581 [8] 43 10 10 03 03 00 00 00
+    rx 601 [8] 40 11 10 01 00 00 00 00
+    tx 581 [8] 43 11 10 01 01 00 00 00   # restoring stays on command
+  )"),
+            "");
 }
 
 TEST_F(StoreRestore, StoredValuesSurviveResetNodeAndPowerCycles) {
