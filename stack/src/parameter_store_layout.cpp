@@ -155,12 +155,27 @@ size_t ParameterStore::computeLayout(Region* regions, size_t* count) const noexc
       return SIZE_MAX;
     }
   }
+  // Records sit at the end of the medium, so that another set of groups (a firmware update that
+  // stores one more parameter) never moves them: the LSS node-id and bit rate survive it.
+  const uint64_t groupsEnd = offset;
+  uint64_t recordBytes = 0;
+  for (size_t i = 0; i < recordCount_; ++i) {
+    if (exceeds32Bits(records_[i].maxLength)) {
+      return SIZE_MAX;
+    }
+    recordBytes += 2U * slotBytes(records_[i].maxLength, slotAlignment_);
+  }
+  const uint64_t end = exceeds32Bits(storage_.size()) ? 0xFFFFFFFFU : storage_.size();
+  if (end >= groupsEnd + recordBytes) {
+    const auto start = static_cast<uint32_t>(end - recordBytes);
+    offset = start - start % static_cast<uint32_t>(slotAlignment_);  // not below groupsEnd
+  }
   for (size_t i = 0; i < recordCount_; ++i) {
     if (!place(recordRegion(records_[i].id), 0U, records_[i].maxLength)) {
       return SIZE_MAX;
     }
   }
-  return static_cast<size_t>(offset);
+  return static_cast<size_t>(groupsEnd + recordBytes);
 }
 
 size_t ParameterStore::requiredSize() const noexcept {
