@@ -126,6 +126,7 @@ GROUP_ENUMERATORS = {
     GROUP_LSS: "kGroupLss",
 }
 FIRST_CUSTOM_GROUP = 4
+LAST_CUSTOM_GROUP = 31  # 0x1010/0x1011 reach groups through a 32-bit mask
 
 # Communication objects that are never stored by default.
 UNSTORED_COMMUNICATION = (0x1003, 0x1010, 0x1011)

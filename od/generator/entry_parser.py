@@ -1,8 +1,9 @@
 """Turns the keys of one sub-index (a VAR section, a `[XXXXsubN]` section or the object section
 of a compact ARRAY) into a validated Entry."""
 
-from data_types import (ACCESS_TYPES, DATA_TYPES, DOMAIN, FIRST_CUSTOM_GROUP, GROUP_NAMES,
-                        GROUP_NONE, HAS_LIMITS, NODE_ID_RELATIVE, WRITABLE_ACCESS,
+from data_types import (ACCESS_TYPES, DATA_TYPES, DOMAIN, FIRST_CUSTOM_GROUP,
+                        GROUP_APPLICATION, GROUP_COMMUNICATION, GROUP_NAMES, GROUP_NONE,
+                        HAS_LIMITS, LAST_CUSTOM_GROUP, NODE_ID_RELATIVE, WRITABLE_ACCESS,
                         default_group)
 from diagnostics import Diagnostics
 from eds_model import Entry
@@ -74,10 +75,11 @@ def parse_group_text(entry: IniEntry, diag: Diagnostics):
     text = entry.value.strip().lower()
     if text in GROUP_NAMES:
         return GROUP_NAMES[text]
-    if text.isdigit() and FIRST_CUSTOM_GROUP <= int(text) <= 255:
+    if text.isdigit() and FIRST_CUSTOM_GROUP <= int(text) <= LAST_CUSTOM_GROUP:
         return int(text)
     diag.error(entry.line, f"invalid CostaStorageGroup '{entry.value}' (expected none, "
-                           f"communication, application, lss or {FIRST_CUSTOM_GROUP}..255)")
+                           f"communication, application, lss or "
+                           f"{FIRST_CUSTOM_GROUP}..{LAST_CUSTOM_GROUP})")
     return None
 
 
@@ -93,6 +95,14 @@ def _parse_group(index, section, access, data_type, inherited, diag):
         elif group != GROUP_NONE and data_type is DOMAIN:
             diag.error(explicit.line, "a DOMAIN has no stored value: "
                                       "CostaStorageGroup must be none")
+        elif group == GROUP_COMMUNICATION and not 0x1000 <= index <= 0x1FFF:
+            diag.error(explicit.line, "only an entry of 0x1000..0x1FFF can be in the "
+                                      "communication group (reset communication restores "
+                                      "and loads exactly that range)")
+        elif (group == GROUP_APPLICATION or group >= FIRST_CUSTOM_GROUP) and index < 0x2000:
+            diag.error(explicit.line, "an entry below 0x2000 cannot be in the application "
+                                      "or a custom group (reset communication would restore "
+                                      "its default without loading its group)")
         return group
     if access == "const" or data_type is DOMAIN:
         return GROUP_NONE

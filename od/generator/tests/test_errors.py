@@ -302,12 +302,21 @@ class EntryErrors(ErrorTestCase):
                          "const entry cannot be stored")
         self.assertError(self.entry("DataType=7\nAccessType=rw\nCostaStorageGroup=3\n"), 13,
                          "invalid CostaStorageGroup '3'")
-        self.assertError(self.entry("DataType=7\nAccessType=rw\nCostaStorageGroup=256\n"), 13,
-                         "invalid CostaStorageGroup")
+        self.assertError(self.entry("DataType=7\nAccessType=rw\nCostaStorageGroup=32\n"), 13,
+                         "invalid CostaStorageGroup '32'")
         self.assertError(self.entry("DataType=7\nAccessType=rw\nCostaStorageGroup=often\n"), 13,
                          "invalid CostaStorageGroup")
         self.assertError(self.entry("DataType=0xF\nAccessType=rw\nCostaStorageGroup=lss\n"), 13,
                          "DOMAIN has no stored value")
+        self.assertError(self.entry("DataType=7\nAccessType=rw\n"
+                                    "CostaStorageGroup=communication\n"), 13,
+                         "only an entry of 0x1000..0x1FFF can be in the communication group")
+        self.assertError(BASE + "[1F00]\nParameterName=Value\n" +
+                         eds("DataType=7\nAccessType=rw\nCostaStorageGroup=application\n"), 13,
+                         "an entry below 0x2000 cannot be in the application or a custom group")
+        self.assertError(BASE + "[1F00]\nParameterName=Value\n" +
+                         eds("DataType=7\nAccessType=rw\nCostaStorageGroup=5\n"), 13,
+                         "an entry below 0x2000 cannot be in the application or a custom group")
 
     def test_domain_object_with_other_type(self):
         self.assertError(self.entry("ObjectType=0x2\nDataType=0x0007\nAccessType=rw\n"), 12,

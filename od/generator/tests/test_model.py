@@ -225,10 +225,12 @@ class InlineTest(unittest.TestCase):
         self.assertEqual(device.objects[0].entries[0].group, GROUP_NONE)
 
     def test_group_names(self):
-        for text, group in (("communication", 1), ("Application", 2), ("lss", 3), ("4", 4),
-                            ("255", 255)):
+        for text, group in (("Application", 2), ("lss", 3), ("4", 4), ("31", 31)):
             device = self.parse_ok(var("0x0005", "rw", f"CostaStorageGroup={text}\n"))
             self.assertEqual(device.objects[0].entries[0].group, group)
+        device = self.parse_ok(var("0x0005", "rw", "CostaStorageGroup=communication\n")
+                               .replace("[2000]", "[1F00]"))
+        self.assertEqual(device.objects[0].entries[0].group, 1)
 
     def test_product_name_falls_back_to_name(self):
         device, _ = parse_text(var("0x0005", "ro"), "solo")
