@@ -11,6 +11,10 @@ namespace costa {
 /// The model fits both EEPROM (byte writes) and flash (erase before write, then commit):
 /// `erase` sets a range to 0xFF, `write` programs bytes, `commit` makes everything written so far
 /// durable. Until `commit` returns true, a power loss may leave any prefix of the writes done.
+/// `write` must take any byte range of erased bytes, in any order: a save programs a slot's
+/// payload, then its header, then its first four bytes last (docs/storage.md). A flash that
+/// programs only whole words or double words needs a driver that buffers a slot and programs it
+/// at `commit` (as the file port does), or a slot alignment and writes that fit its unit.
 /// All calls are made from the main loop and may take as long as the medium needs; the stack
 /// calls them only on an explicit save or restore request, never while handling ordinary frames.
 class NvStorage {
