@@ -42,35 +42,6 @@ TEST_F(TransmitFlood, ResetCommunicationDiscardsWhatWaitedAndTheBootUpLeavesFirs
   EXPECT_EQ(statistics.txDropped, 1000U - kDepth);
 }
 
-// CiA 301: a stopped node sends nothing but error control (and LSS answers).
-TEST_F(TransmitFlood, StoppingDiscardsWhatWaited) {
-  flood(bus_, 3 * kDepth);
-  EXPECT_TRANSCRIPT("rx 000 [2] 02 01");  // stop, the controller still busy
-  bus_.can().setAccepting(true);
-  EXPECT_TRANSCRIPT(R"(
-    wait 1
-    silence                              # no SDO answer leaves a stopped node
-    rx 000 [2] 01 01
-    rx 601 [8] 40 17 10 00 00 00 00 00
-    tx 581 [8] 4B 17 10 00 00 00 00 00   # operational: the next answer at once
-  )");
-  EXPECT_EQ(bus_.node().statistics().txDiscarded, kDepth);
-}
-
-TEST_F(TransmitFlood, StoppingKeepsTheErrorControlFramesThatWaited) {
-  bus_.can().setAccepting(false);
-  EXPECT_TRANSCRIPT("rx 000 [2] 82 01");  // reset communication: the boot-up waits
-  flood(bus_, 3);                         // and three SDO answers behind it
-  EXPECT_TRANSCRIPT("rx 000 [2] 02 01");  // stopped at once, as masters do
-  bus_.can().setAccepting(true);
-  EXPECT_TRANSCRIPT(R"(
-    wait 1
-    tx 701 [1] 00                        # the boot-up still leaves
-    silence                              # the SDO answers do not
-  )");
-  EXPECT_EQ(bus_.node().statistics().txDiscarded, 3U);
-}
-
 TEST_F(TransmitFlood, TheBootUpOfAResetNodeIsNotLostInAFullQueue) {
   flood(bus_, 3 * kDepth);
   EXPECT_TRANSCRIPT("rx 000 [2] 81 01");  // reset node while the queue is full

@@ -27,32 +27,6 @@ TEST(TxQueue, KeepsOrderAndCountsDropsWhenFull) {
   EXPECT_TRUE(queue.empty());
 }
 
-TEST(TxQueue, DiscardUnlessKeepsTheOthersInOrderAcrossTheWrap) {
-  QueuedFrame slots[4];
-  TxQueue queue(slots, 4);
-  CanFrame frame;
-  for (uint32_t id = 1; id <= 3; ++id) {
-    frame.id = id;
-    queue.push(frame);
-  }
-  queue.pop();
-  queue.pop();  // the head at slot 2: the next pushes wrap to slots 0 and 1
-  for (uint32_t id = 4; id <= 6; ++id) {
-    frame.id = id;
-    queue.push(frame);
-  }
-  // 3, 4, 5, 6 in slots 2, 3, 0, 1: keep the even ones.
-  EXPECT_EQ(queue.discardUnless([](const CanFrame& f) { return f.id % 2U == 0U; }), 2U);
-  ASSERT_EQ(queue.size(), 2U);
-  EXPECT_EQ(queue.front().frame.id, 4U);
-  queue.pop();
-  EXPECT_EQ(queue.front().frame.id, 6U);
-  frame.id = 7;
-  EXPECT_TRUE(queue.push(frame));  // behind 6
-  queue.pop();
-  EXPECT_EQ(queue.front().frame.id, 7U);
-}
-
 using TxPath = ExampleNodeTest;
 
 TEST_F(TxPath, FramesRefusedByTheControllerAreSentLaterInOrder) {

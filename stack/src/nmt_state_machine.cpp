@@ -138,7 +138,6 @@ void NmtStateMachine::setState(NmtState state) noexcept {
   if (state == NmtState::kStopped) {
     services_.sdo.reset();
     services_.sdoServers.reset();
-    services_.tx.discardQueuedOnStop();  // SDO answers, PDOs, EMCY that waited may not leave
     services_.sync.restartCounter();
   }
   if (previous == NmtState::kOperational) {

@@ -52,14 +52,6 @@ class TransmitPath {
   /// Discards every queued frame (reset communication: what was waiting belongs to the state
   /// the node leaves). Counted in discarded().
   void discardQueued() noexcept { discarded_ += static_cast<uint32_t>(queue_.clear()); }
-  /// Discards the queued frames a stopped node may not send: all but error control (0x701 to
-  /// 0x77F: boot-up, heartbeat, guarding answers) and LSS answers (0x7E4). Counted in
-  /// discarded().
-  void discardQueuedOnStop() noexcept {
-    discarded_ += static_cast<uint32_t>(queue_.discardUnless([](const CanFrame& frame) {
-      return !frame.extended && ((frame.id >= 0x701U && frame.id <= 0x77FU) || frame.id == 0x7E4U);
-    }));
-  }
 
   /// Opens or closes a gate. Opening does not send by itself: the caller flushes.
   void setGate(Gate gate, bool closed) noexcept {

@@ -66,33 +66,12 @@ class TxQueue {
     return held;
   }
 
-  /// Removes every frame `keep(frame)` is false for, keeping the others in their order; returns
-  /// how many it removed. O(size).
-  template <typename Keep>
-  size_t discardUnless(Keep keep) noexcept {
-    size_t kept = 0;
-    for (size_t i = 0; i < count_; ++i) {
-      const size_t from = wrap(head_ + i);
-      if (keep(slots_[from].frame)) {
-        const size_t to = wrap(head_ + kept);
-        if (to != from) {
-          slots_[to] = slots_[from];
-        }
-        ++kept;
-      }
-    }
-    const size_t removed = count_ - kept;
-    count_ = kept;
-    return removed;
-  }
   /// Frames refused because the queue was full, since construction.
   uint32_t dropped() const noexcept { return dropped_; }
   /// Frames discarded because their deadline passed while they waited.
   uint32_t expired() const noexcept { return expired_; }
 
  private:
-  size_t wrap(size_t slot) const noexcept { return slot >= capacity_ ? slot - capacity_ : slot; }
-
   QueuedFrame* slots_;
   size_t capacity_;
   size_t head_ = 0;
