@@ -42,6 +42,26 @@ TEST_F(TransmitFlood, ResetCommunicationDiscardsWhatWaitedAndTheBootUpLeavesFirs
   EXPECT_EQ(statistics.txDropped, 1000U - kDepth);
 }
 
+// The EMCY of an error that stops the node (0x1029:01 = 2) leaves before the stop, and a busy
+// controller does not lose it: it goes when the controller takes it, the node stopped.
+TEST_F(TransmitFlood, TheEmcyBeforeAnErrorStopLeavesWhenTheControllerTakesIt) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 16 10 01 64 00 05 00   # monitor node 5, 100 ms
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 601 [8] 2F 29 10 01 02 00 00 00   # on a communication error: stopped
+    tx 581 [8] 60 29 10 01 00 00 00 00
+    rx 705 [1] 05
+  )");
+  bus_.can().setAccepting(false);
+  EXPECT_TRANSCRIPT("wait 100");  // the timeout: EMCY 0x8130 raised, the node stops
+  EXPECT_EQ(bus_.node().state(), NmtState::kStopped);
+  bus_.can().setAccepting(true);
+  EXPECT_TRANSCRIPT(R"(
+    wait 1
+    tx 081 [8] 30 81 11 05 00 00 00 00
+  )");
+}
+
 TEST_F(TransmitFlood, TheBootUpOfAResetNodeIsNotLostInAFullQueue) {
   flood(bus_, 3 * kDepth);
   EXPECT_TRANSCRIPT("rx 000 [2] 81 01");  // reset node while the queue is full
