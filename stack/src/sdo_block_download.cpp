@@ -41,7 +41,6 @@ AbortCode SdoBlockDownload::start(const od::EntryRef& ref, const uint8_t* reques
 }
 
 AbortCode SdoBlockDownload::onRequest(const uint8_t* request) noexcept {
-  droppedLast_ = false;
   switch (phase_) {
     case Phase::kSegments: return segment(request);
     case Phase::kEnd: return end(request);
@@ -61,8 +60,6 @@ AbortCode SdoBlockDownload::segment(const uint8_t* request) noexcept {
     // makes the client repeat from the last segment received in sequence.
     if (last || sequence == blockSize_) {
       acknowledge(lastSequence_);
-    } else {
-      droppedLast_ = true;
     }
     return AbortCode::kNone;
   }

@@ -85,9 +85,7 @@ void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) no
 void SdoServer::continueBlock(const uint8_t* request, Microseconds now) noexcept {
   if (state_ == State::kBlockDownload) {
     const AbortCode result = blockDownload_.onRequest(request);
-    if (!blockDownload_.droppedLast()) {
-      afterBlockStep(result, blockDownload_.finished(), now);
-    }
+    afterBlockStep(result, blockDownload_.finished(), now);
   } else {
     const AbortCode result = blockUpload_.onRequest(request);
     afterBlockStep(result, blockUpload_.finished(), now);

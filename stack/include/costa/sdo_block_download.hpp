@@ -35,9 +35,6 @@ class SdoBlockDownload {
 
   /// The end frame was answered: the value is written.
   bool finished() const noexcept { return phase_ == Phase::kDone; }
-  /// The last request was a segment out of sequence, dropped without an answer: no progress,
-  /// so the transfer's timeout runs on (a stray frame does not keep the server busy).
-  bool droppedLast() const noexcept { return droppedLast_; }
 
   /// Consistency of a running transfer: a block size of 1..127 and a sequence number within
   /// it. O(1).
@@ -60,7 +57,6 @@ class SdoBlockDownload {
   SdoValueWriter& writer_;
   Phase phase_ = Phase::kDone;
   bool crcUsed_ = false;
-  bool droppedLast_ = false;
   Crc16 crc_;
   uint8_t blockSize_ = 0;     ///< Segments in the current sub-block.
   uint8_t lastSequence_ = 0;  ///< Last segment received in sequence in this sub-block.
