@@ -139,6 +139,23 @@ TEST_F(Tpdo, WritingTheEventTimerKeepsAWaitingEventAndTheInhibitTime) {
   )");
 }
 
+TEST_F(Tpdo, WritingAParameterKeepsTheEventOfAnAcyclicSynchronousPdo) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 00 18 02 00 00 00 00   # type 0: at the SYNC after an event
+    tx 581 [8] 60 00 18 02 00 00 00 00
+    rx 000 [2] 01 01
+  )");
+  withNode([](Node& node) { ASSERT_TRUE(node.requestTpdo(0x1800)); });
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 00 18 05 64 00 00 00   # event timer 100 ms, while valid
+    tx 581 [8] 60 00 18 05 00 00 00 00
+    rx 080 [0]
+    tx 181 [6] xx xx xx xx D7 00         # the event still counts
+    rx 080 [0]
+    silence
+  )");
+}
+
 TEST_F(Tpdo, SynchronousCyclicEveryNthSync) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 00 18 02 03 00 00 00   # every 3rd SYNC

@@ -51,11 +51,14 @@ void TpdoChannel::start(PdoContext& context, Microseconds now, bool initialEvent
 }
 
 void TpdoChannel::restart(PdoContext& context, Microseconds now) noexcept {
-  const bool pending = event_;
-  const Microseconds inhibitEnd = inhibitUntil_;
+  // What a PDO made not valid had waiting is gone (and an old inhibit time would not expire).
+  const bool pending = event_ && valid_;
+  const Microseconds inhibitEnd = valid_ ? inhibitUntil_ : kNever;
   start(context, now, false);
+  if (type_ == 0U || eventDriven()) {
+    event_ = pending;  // type 0: sent at the next SYNC still
+  }
   if (eventDriven()) {
-    event_ = pending && valid_;
     inhibitUntil_ = inhibitEnd;  // the transmission before the write still inhibits the next
     context.clock.schedule(nextDeadline(now));
   }
