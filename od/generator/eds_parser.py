@@ -8,7 +8,8 @@ from data_types import (OBJECT_ARRAY, OBJECT_CODE_NAMES, OBJECT_CODES, OBJECT_DO
                         OBJECT_RECORD, OBJECT_VAR, UNSIGNED8)
 from diagnostics import Diagnostics
 from eds_model import Device, OdObject
-from entry_parser import key_line, optional_value, parse_entry, parse_group_text, parse_number
+from entry_parser import (check_group_range, key_line, optional_value, parse_entry,
+                          parse_group_text, parse_number)
 from ini_reader import IniEntry, IniFile, IniSection
 from object_lists import check_object_lists
 
@@ -181,6 +182,8 @@ def _parse_object(index, section, subs, name_section, diag):
     group_entry = optional_value(section, "CostaStorageGroup")
     if group_entry is not None:
         group = parse_group_text(group_entry, diag)
+        if group is not None:
+            check_group_range(index, group, group_entry.line, diag)
     if compact:
         if code == OBJECT_RECORD:
             diag.error(key_line(section, "CompactSubObj"),

@@ -83,6 +83,18 @@ def parse_group_text(entry: IniEntry, diag: Diagnostics):
     return None
 
 
+def check_group_range(index: int, group: int, line: int, diag: Diagnostics):
+    """A group reaches only the indices its reset loads: reset communication restores the
+    defaults of 0x1000..0x1FFF and loads the communication group only."""
+    if group == GROUP_COMMUNICATION and not 0x1000 <= index <= 0x1FFF:
+        diag.error(line, "only an entry of 0x1000..0x1FFF can be in the communication group "
+                         "(reset communication restores and loads exactly that range)")
+    elif (group == GROUP_APPLICATION or group >= FIRST_CUSTOM_GROUP) and index < 0x2000:
+        diag.error(line, "an entry below 0x2000 cannot be in the application or a custom "
+                         "group (reset communication would restore its default without "
+                         "loading its group)")
+
+
 def _parse_group(index, section, access, data_type, inherited, diag):
     explicit = optional_value(section, "CostaStorageGroup")
     if explicit is not None:
@@ -95,14 +107,8 @@ def _parse_group(index, section, access, data_type, inherited, diag):
         elif group != GROUP_NONE and data_type is DOMAIN:
             diag.error(explicit.line, "a DOMAIN has no stored value: "
                                       "CostaStorageGroup must be none")
-        elif group == GROUP_COMMUNICATION and not 0x1000 <= index <= 0x1FFF:
-            diag.error(explicit.line, "only an entry of 0x1000..0x1FFF can be in the "
-                                      "communication group (reset communication restores "
-                                      "and loads exactly that range)")
-        elif (group == GROUP_APPLICATION or group >= FIRST_CUSTOM_GROUP) and index < 0x2000:
-            diag.error(explicit.line, "an entry below 0x2000 cannot be in the application "
-                                      "or a custom group (reset communication would restore "
-                                      "its default without loading its group)")
+        else:
+            check_group_range(index, group, explicit.line, diag)
         return group
     if access == "const" or data_type is DOMAIN:
         return GROUP_NONE

@@ -317,6 +317,12 @@ class EntryErrors(ErrorTestCase):
         self.assertError(BASE + "[1F00]\nParameterName=Value\n" +
                          eds("DataType=7\nAccessType=rw\nCostaStorageGroup=5\n"), 13,
                          "an entry below 0x2000 cannot be in the application or a custom group")
+        self.assertError(BASE + "[1F00]\nParameterName=Record\nObjectType=0x9\n"
+                         "CostaStorageGroup=application\nSubNumber=2\n"
+                         "[1F00sub0]\nParameterName=Highest\nDataType=0x0005\n"
+                         "AccessType=const\nDefaultValue=1\n"
+                         "[1F00sub1]\nParameterName=Value\nDataType=0x0007\nAccessType=rw\n",
+                         12, "an entry below 0x2000 cannot be in the application or a custom")
 
     def test_domain_object_with_other_type(self):
         self.assertError(self.entry("ObjectType=0x2\nDataType=0x0007\nAccessType=rw\n"), 12,
