@@ -160,7 +160,7 @@ size_t ParameterStore::computeLayout(Region* regions, size_t* count) const noexc
   const uint64_t groupsEnd = offset;
   uint64_t recordBytes = 0;
   for (size_t i = 0; i < recordCount_; ++i) {
-    if (exceeds32Bits(records_[i].maxLength)) {
+    if (exceeds32Bits(records_[i].maxLength) || exceeds32Bits(slotAlignment_)) {
       return SIZE_MAX;
     }
     recordBytes += 2U * slotBytes(records_[i].maxLength, slotAlignment_);
