@@ -22,7 +22,8 @@ inline constexpr size_t kSizeNotIndicated = SIZE_MAX;
 /// The size a client indicated on the wire: itself, but never kSizeNotIndicated (a 32-bit
 /// size_t would take 0xFFFFFFFF for it; one byte less is refused as too long all the same).
 inline constexpr size_t indicatedSize(uint32_t wireSize) noexcept {
-  return wireSize < kSizeNotIndicated ? wireSize : kSizeNotIndicated - 1U;
+  const size_t size = wireSize;
+  return size == kSizeNotIndicated ? size - 1U : size;
 }
 
 /// Attached to a range of indices with `Node::attachHook()`. The default implementation of each
