@@ -105,7 +105,7 @@ class AbsentNodeGuarding final : public AbsentService {
     return NodeGuarding::Event::kNone;
   }
   Microseconds nextDeadline() const noexcept { return kNever; }
-  static bool expired() noexcept { return false; }
+  bool expired() const noexcept { return false; }
 };
 
 /// Heartbeat consumer compiled out: other nodes' heartbeats are not monitored; no 0x1016.
