@@ -18,6 +18,17 @@
 
 namespace costa::test {
 
+/// TPDO1 of the example given an inhibit time of 50 ms (set while not valid), then operational.
+inline constexpr const char* kTpdo1Inhibit50ms = R"(
+    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 601 [8] 2B 00 18 03 F4 01 00 00   # inhibit 500 x 100 us = 50 ms
+    tx 581 [8] 60 00 18 03 00 00 00 00
+    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 000 [2] 01 01
+)";
+
 /// The example's behaviour on a node with explicit settings (for profile-specific behaviour).
 inline InProcessBus::Factory exampleWith(const NodeSettings& settings) {
   return [settings](CanTransmitter& can) -> std::unique_ptr<host::DeviceTarget> {

@@ -275,15 +275,7 @@ TEST_F(AnsweringTpdos, ARefusedRpdoDoesNotTakeBackTheEventTimersTransmission) {
 TEST_F(AnsweringTpdos, ARefusedRpdoDoesNotTakeBackAnApplicationsEvent) {
   static RefusingHook refusing;
   withNode([](Node& node) { ASSERT_TRUE(node.attachHook(0x2000, 0x2000, refusing)); });
-  EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate
-    tx 581 [8] 60 00 18 01 00 00 00 00
-    rx 601 [8] 2B 00 18 03 F4 01 00 00   # inhibit 500 x 100 us = 50 ms, no event timer
-    tx 581 [8] 60 00 18 03 00 00 00 00
-    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
-    tx 581 [8] 60 00 18 01 00 00 00 00
-    rx 000 [2] 01 01
-  )");
+  EXPECT_TRANSCRIPT(kTpdo1Inhibit50ms);  // no event timer
   withNode([](Node& node) { ASSERT_TRUE(node.requestTpdo(0x1800)); });
   EXPECT_TRANSCRIPT(R"(
     tx 181 [6] xx xx xx xx D7 00         # at once; inhibited for 50 ms

@@ -62,14 +62,8 @@ TEST_F(Tpdo, InhibitTimeDelaysButKeepsEvents) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 23 00 18 03 F4 01 00 00   # inhibit while valid: refused
     tx 581 [8] 80 00 18 03 30 00 09 06
-    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate
-    tx 581 [8] 60 00 18 01 00 00 00 00
-    rx 601 [8] 2B 00 18 03 F4 01 00 00   # inhibit 500 x 100 us = 50 ms
-    tx 581 [8] 60 00 18 03 00 00 00 00
-    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
-    tx 581 [8] 60 00 18 01 00 00 00 00
-    rx 000 [2] 01 01
   )");
+  EXPECT_TRANSCRIPT(kTpdo1Inhibit50ms);
   withNode([](Node& node) { node.markChanged(0x2011, 0); });
   EXPECT_TRANSCRIPT("tx 181 [6] 00 00 00 00 D7 00\nwait 10");
   withNode([](Node& node) { node.markChanged(0x2011, 0); });
@@ -112,15 +106,7 @@ TEST_F(Tpdo, AnEventTimerThatExpiresWithinTheInhibitTimeSendsWhenItEnds) {
 // A parameter written while operational (the event timer may change while the PDO is valid)
 // restarts the PDO's timers, but keeps its waiting event and its running inhibit time.
 TEST_F(Tpdo, WritingTheEventTimerKeepsAWaitingEventAndTheInhibitTime) {
-  EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate
-    tx 581 [8] 60 00 18 01 00 00 00 00
-    rx 601 [8] 2B 00 18 03 F4 01 00 00   # inhibit 500 x 100 us = 50 ms
-    tx 581 [8] 60 00 18 03 00 00 00 00
-    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
-    tx 581 [8] 60 00 18 01 00 00 00 00
-    rx 000 [2] 01 01
-  )");
+  EXPECT_TRANSCRIPT(kTpdo1Inhibit50ms);
   withNode([](Node& node) { ASSERT_TRUE(node.requestTpdo(0x1800)); });
   EXPECT_TRANSCRIPT(R"(
     tx 181 [6] xx xx xx xx D7 00         # at once; inhibited for 50 ms

@@ -50,17 +50,18 @@ void RpdoChannel::stop() noexcept {
 }
 
 void RpdoChannel::clearConditions(PdoContext& context) noexcept {
-  const uint16_t raised[] = {timedOut_ ? kEmcyTimeout : uint16_t{0},
-                             tooShort_ ? kEmcyLengthShort : uint16_t{0},
-                             tooLong_ ? kEmcyLengthLong : uint16_t{0}};
+  if (timedOut_) {
+    context.emcy.clear(kEmcyTimeout, source());
+  }
+  if (tooShort_) {
+    context.emcy.clear(kEmcyLengthShort, source());
+  }
+  if (tooLong_) {
+    context.emcy.clear(kEmcyLengthLong, source());
+  }
   timedOut_ = false;
   tooShort_ = false;
   tooLong_ = false;
-  for (const uint16_t code : raised) {
-    if (code != 0U) {
-      context.emcy.clear(code, source());
-    }
-  }
 }
 
 bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {

@@ -55,7 +55,7 @@ void TpdoChannel::restart(PdoContext& context, Microseconds now) noexcept {
   const bool pending = event_ && valid_;
   const Microseconds inhibitEnd = valid_ ? inhibitUntil_ : kNever;
   start(context, now, false);
-  if (type_ == 0U || eventDriven()) {
+  if (takesEvents()) {
     event_ = pending;  // type 0: sent at the next SYNC still
   }
   if (eventDriven()) {
@@ -72,7 +72,7 @@ void TpdoChannel::stop() noexcept {
 }
 
 bool TpdoChannel::signalEvent(NodeClock& clock) noexcept {
-  if (!running_ || (type_ != 0U && !eventDriven())) {
+  if (!running_ || !takesEvents()) {
     return false;
   }
   const bool raised = !event_;

@@ -31,6 +31,8 @@ class TpdoChannel {
   uint8_t transmissionType() const noexcept { return type_; }
   bool rtrAllowed() const noexcept { return rtrAllowed_; }
   bool eventDriven() const noexcept { return type_ >= 254U; }
+  /// Events count for it: event-driven (254, 255) or acyclic synchronous (0, at the next SYNC).
+  bool takesEvents() const noexcept { return type_ == 0U || eventDriven(); }
   /// Sends at SYNCs (types 0..240) or samples at them (252).
   bool synchronous() const noexcept { return type_ <= 240U || type_ == 252U; }
 
