@@ -1,5 +1,6 @@
 // The SOLO behind its objects: the simulated drive (plausibility), the objects with side
 // effects, the device error register, and the SOLO wire profile.
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -152,6 +153,56 @@ TEST_F(Solo, DisablingTheDriveLetsTheMotorCoast) {
   )");
   // Coasting at 20 rev/s^2 = 1200 rpm/s: about 400 rpm left after 0.5 s.
   EXPECT_NEAR(speed(), 400.0, 15.0);
+}
+
+// A drive at rest is not stepped (process() asks for no step), and a speed written then ramps
+// from the next 10 ms step on, as if every step had been taken: 50 steps of 6 rpm in 0.5 s.
+// After the setup the test calls the target as costa-slave does: process() after each frame
+// and at the deadlines it returns, at no other time.
+TEST_F(Solo, ASpeedWrittenAfterARestRampsFromTheNextStep) {
+  digitalSpeedMode();
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 22 2A 30 00 00 00 14 00   # acceleration 10 rev/s^2
+    tx 581 [8] 60 2A 30 00 00 00 00 00
+    wait 1000
+  )");
+  host::DeviceTarget& target = bus_.target();
+  Microseconds now = bus_.now();
+  EXPECT_EQ(target.process(now), kNever);
+  now += 1345000U;  // 134.5 steps later
+  CanFrame speed1000;
+  speed1000.id = 0x601;
+  speed1000.dlc = 8;
+  const uint8_t write[8] = {0x22, 0x05, 0x30, 0x00, 0xE8, 0x03, 0x00, 0x00};
+  std::copy(write, write + 8, speed1000.data);
+  target.onFrame(speed1000, now);
+  Microseconds next = target.process(now);
+  EXPECT_EQ(next, now + 5000U);  // the next step
+  const Microseconds end = now + 500000U;
+  while (reached(end, next)) {
+    next = target.process(next);
+  }
+  EXPECT_EQ(speed(), 300.0);
+}
+
+// The node's own processing can change the drive's command: life guarding stops it. A drive
+// at rest then asks for its next step again, so that the stop is stepped as before.
+TEST_F(Solo, LifeGuardingExpiringOverADriveAtRestAsksForTheNextStep) {
+  digitalSpeedMode();
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 22 0C 10 00 64 00 00 00   # guard time 100 ms
+    tx 581 [8] 60 0C 10 00 00 00 00 00
+    rx 601 [8] 22 0D 10 00 02 00 00 00   # life time factor 2
+    tx 581 [8] 60 0D 10 00 00 00 00 00
+    rx 701 [0] RTR
+    tx 701 [1] FF
+  )");
+  const Microseconds expiry = bus_.now() + 200000U;
+  EXPECT_TRANSCRIPT("wait 150");
+  EXPECT_EQ(bus_.target().process(bus_.now()), expiry);  // the drive rests: no step
+  const Microseconds next = bus_.target().process(expiry);
+  EXPECT_NE(value(0x3020, 0) & 0x20U, 0U);  // communication lost: the drive is stopped
+  EXPECT_TRUE(next - expiry <= solo::SoloDevice::kStep) << next - expiry;
 }
 
 TEST_F(Solo, PwmFrequencyIsWrittenInKilohertzAndReadInHertz) {

@@ -1,5 +1,7 @@
 #include "simulated_drive.hpp"
 
+#include <string.h>
+
 namespace costa::solo {
 namespace {
 
@@ -53,12 +55,13 @@ double SimulatedDrive::countsPerRevolution(const DriveCommand& command) noexcept
 }
 
 void SimulatedDrive::step(const DriveCommand& command, Microseconds elapsed) noexcept {
-  polePairs_ = static_cast<double>(command.poles) / 2.0;
-  dcMotor_ = command.motor == MotorType::kDcBrushed;
+  const State before = s_;
+  s_.polePairs = static_cast<double>(command.poles) / 2.0;
+  s_.dcMotor = command.motor == MotorType::kDcBrushed ? 1U : 0U;
   if (command.currentLimitA <= 0.0) {
-    faults_ |= 1U;  // over-current protection trips when the limit is 0 (manual line 885)
+    s_.faults |= 1U;  // over-current protection trips when the limit is 0 (manual line 885)
   } else {
-    faults_ &= ~1U;
+    s_.faults &= ~1U;
   }
   constexpr Microseconds kStep = 1000;  // integrate in 1 ms steps
   while (elapsed > 0) {
@@ -66,15 +69,17 @@ void SimulatedDrive::step(const DriveCommand& command, Microseconds elapsed) noe
     integrate(command, static_cast<double>(slice) / 1e6);
     elapsed -= slice;
   }
+  // Bit for bit, so that -0.0 is not taken for 0.0, nor a NaN for anything.
+  resting_ = memcmp(&before, &s_, sizeof(State)) == 0;
 }
 
 void SimulatedDrive::integrate(const DriveCommand& command, double dt) noexcept {
   const bool driving =
-      command.outputEnabled && faults_ == 0U && command.commanding == CommandingMode::kDigital;
-  const double before = speedRpm_;
+      command.outputEnabled && s_.faults == 0U && command.commanding == CommandingMode::kDigital;
+  const double before = s_.speedRpm;
   if (!driving) {
-    speedRpm_ = approach(speedRpm_, 0, kCoastRevPerS2 * kRpmPerS2 * dt);
-    id_ = 0;
+    s_.speedRpm = approach(s_.speedRpm, 0, kCoastRevPerS2 * kRpmPerS2 * dt);
+    s_.id = 0;
   } else if (command.control == ControlMode::kSpeed) {
     integrateSpeed(command, dt);
   } else if (command.control == ControlMode::kPosition) {
@@ -85,19 +90,20 @@ void SimulatedDrive::integrate(const DriveCommand& command, double dt) noexcept 
     integrateTorque(command, dt);
   }
   if (!driving || command.control != ControlMode::kTorque) {
-    const double accelRevPerS2 = (speedRpm_ - before) / 60.0 / dt;
-    const double targetIq = driving ? accelRevPerS2 / kRevPerS2PerAmp + 0.01 * speedRpm_ / 60.0 : 0;
-    iq_ = clamp(targetIq, -command.currentLimitA, command.currentLimitA);
+    const double accelRevPerS2 = (s_.speedRpm - before) / 60.0 / dt;
+    const double targetIq =
+        driving ? accelRevPerS2 / kRevPerS2PerAmp + 0.01 * s_.speedRpm / 60.0 : 0;
+    s_.iq = clamp(targetIq, -command.currentLimitA, command.currentLimitA);
   }
-  const double revolutions = speedRpm_ / 60.0 * dt;
-  position_ += revolutions * countsPerRevolution(command);
-  electricalTurns_ += revolutions * polePairs_;
-  electricalTurns_ -= static_cast<double>(static_cast<int64_t>(electricalTurns_));
-  if (electricalTurns_ < 0) {
-    electricalTurns_ += 1.0;
+  const double revolutions = s_.speedRpm / 60.0 * dt;
+  s_.position += revolutions * countsPerRevolution(command);
+  s_.electricalTurns += revolutions * s_.polePairs;
+  s_.electricalTurns -= static_cast<double>(static_cast<int64_t>(s_.electricalTurns));
+  if (s_.electricalTurns < 0) {
+    s_.electricalTurns += 1.0;
   }
-  const double heating = kAmbientC + 0.2 * (iq_ * iq_ + id_ * id_);
-  temperature_ += (heating - temperature_) * (dt / 30.0);
+  const double heating = kAmbientC + 0.2 * (s_.iq * s_.iq + s_.id * s_.id);
+  s_.temperature += (heating - s_.temperature) * (dt / 30.0);
 }
 
 void SimulatedDrive::integrateSpeed(const DriveCommand& command, double dt) noexcept {
@@ -106,7 +112,7 @@ void SimulatedDrive::integrateSpeed(const DriveCommand& command, double dt) noex
   if (command.clockwise) {
     target = -target;
   }
-  const bool speedingUp = absolute(target) > absolute(speedRpm_) && target * speedRpm_ >= 0;
+  const bool speedingUp = absolute(target) > absolute(s_.speedRpm) && target * s_.speedRpm >= 0;
   double ramp = speedingUp ? command.accelerationRevPerS2 : command.decelerationRevPerS2;
   if (ramp <= 0) {
     ramp = kDefaultRampRevPerS2;
@@ -114,25 +120,25 @@ void SimulatedDrive::integrateSpeed(const DriveCommand& command, double dt) noex
   if (command.speedReferenceRpm == 0.0) {
     ramp = kFastStopRevPerS2;  // manual lines 1276-1281: 0 bypasses the deceleration
   }
-  speedRpm_ = approach(speedRpm_, target, ramp * kRpmPerS2 * dt);
-  id_ = command.idReferenceA;
+  s_.speedRpm = approach(s_.speedRpm, target, ramp * kRpmPerS2 * dt);
+  s_.id = command.idReferenceA;
 }
 
 bool SimulatedDrive::integratePosition(const DriveCommand& command, double dt) noexcept {
   const double cpr = countsPerRevolution(command);
-  const double error = static_cast<double>(command.positionReference) - position_;
+  const double error = static_cast<double>(command.positionReference) - s_.position;
   const double accel = kDefaultRampRevPerS2 * cpr;  // counts/s²
   const double vmax = command.speedLimitRpm / 60.0 * cpr;
   double vwanted = squareRoot(2.0 * accel * absolute(error));
   vwanted = vwanted < vmax ? vwanted : vmax;
   vwanted = error < 0 ? -vwanted : vwanted;
-  const double v = approach(speedRpm_ / 60.0 * cpr, vwanted, accel * dt);
-  speedRpm_ = v / cpr * 60.0;
-  id_ = command.idReferenceA;
+  const double v = approach(s_.speedRpm / 60.0 * cpr, vwanted, accel * dt);
+  s_.speedRpm = v / cpr * 60.0;
+  s_.id = command.idReferenceA;
   if (absolute(error) <= absolute(v * dt) || absolute(error) < 0.5) {
-    position_ = static_cast<double>(command.positionReference);  // arrived: stop on the spot
-    speedRpm_ = 0;
-    iq_ = 0;
+    s_.position = static_cast<double>(command.positionReference);  // arrived: stop on the spot
+    s_.speedRpm = 0;
+    s_.iq = 0;
     return true;
   }
   return false;
@@ -144,31 +150,32 @@ void SimulatedDrive::integrateTorque(const DriveCommand& command, double dt) noe
   if (command.clockwise) {
     reference = -reference;
   }
-  iq_ += (reference - iq_) * (dt / 0.005 > 1 ? 1 : dt / 0.005);
-  const double accel = iq_ * kRevPerS2PerAmp - 0.5 * speedRpm_ / 60.0;
-  speedRpm_ = clamp(speedRpm_ + accel * kRpmPerS2 * dt, -30000, 30000);
-  id_ = command.idReferenceA;
+  s_.iq += (reference - s_.iq) * (dt / 0.005 > 1 ? 1 : dt / 0.005);
+  const double accel = s_.iq * kRevPerS2PerAmp - 0.5 * s_.speedRpm / 60.0;
+  s_.speedRpm = clamp(s_.speedRpm + accel * kRpmPerS2 * dt, -30000, 30000);
+  s_.id = command.idReferenceA;
 }
 
 void SimulatedDrive::read(DriveFeedback* feedback) noexcept {
   DriveFeedback out;
-  out.speedRpm = speedRpm_;
-  out.position = static_cast<int32_t>(clamp(position_, -2147483647.0, 2147483647.0));
-  out.iqA = iq_;
-  out.idA = id_;
-  out.phaseACurrentA = iq_ * sineOfTurns(electricalTurns_);
-  out.phaseBCurrentA = iq_ * sineOfTurns(electricalTurns_ - 1.0 / 3.0);
-  const double emf = kBusVoltage * speedRpm_ / 30000.0;
-  out.phaseAVoltageV = emf * sineOfTurns(electricalTurns_ + 0.25);
-  out.phaseBVoltageV = emf * sineOfTurns(electricalTurns_ + 0.25 - 1.0 / 3.0);
-  out.busVoltageV = kBusVoltage - 0.01 * absolute(iq_);
-  out.motorCurrentA = dcMotor_ ? iq_ : 0;
-  out.motorVoltageV = dcMotor_ ? emf : 0;
-  out.anglePerUnit = electricalTurns_ < 0.5 ? electricalTurns_ * 2.0 : electricalTurns_ * 2.0 - 2.0;
-  out.boardTemperatureC = temperature_;
+  out.speedRpm = s_.speedRpm;
+  out.position = static_cast<int32_t>(clamp(s_.position, -2147483647.0, 2147483647.0));
+  out.iqA = s_.iq;
+  out.idA = s_.id;
+  out.phaseACurrentA = s_.iq * sineOfTurns(s_.electricalTurns);
+  out.phaseBCurrentA = s_.iq * sineOfTurns(s_.electricalTurns - 1.0 / 3.0);
+  const double emf = kBusVoltage * s_.speedRpm / 30000.0;
+  out.phaseAVoltageV = emf * sineOfTurns(s_.electricalTurns + 0.25);
+  out.phaseBVoltageV = emf * sineOfTurns(s_.electricalTurns + 0.25 - 1.0 / 3.0);
+  out.busVoltageV = kBusVoltage - 0.01 * absolute(s_.iq);
+  out.motorCurrentA = s_.dcMotor != 0U ? s_.iq : 0;
+  out.motorVoltageV = s_.dcMotor != 0U ? emf : 0;
+  out.anglePerUnit =
+      s_.electricalTurns < 0.5 ? s_.electricalTurns * 2.0 : s_.electricalTurns * 2.0 - 2.0;
+  out.boardTemperatureC = s_.temperature;
   out.analogue[0] = kAnalogueInputs[0];
   out.analogue[1] = kAnalogueInputs[1];
-  out.faults = faults_;
+  out.faults = s_.faults;
   *feedback = out;
 }
 

@@ -30,8 +30,14 @@ class SimulatedDrive final : public DriveBackend {
   static constexpr uint32_t kAnalogueInputs[2] = {0, 2048};
 
   void step(const DriveCommand& command, Microseconds elapsed) noexcept override;
+  /// The last step left every part of the state as it was, bit for bit: from that state, every
+  /// step under the same command does the same (the model is deterministic).
+  bool resting() const noexcept override { return resting_; }
   void read(DriveFeedback* feedback) noexcept override;
-  void home() noexcept override { position_ = 0; }
+  void home() noexcept override {
+    s_.position = 0;
+    resting_ = false;
+  }
   bool identify(double* resistance, double* inductance) noexcept override;
 
  private:
@@ -42,15 +48,22 @@ class SimulatedDrive final : public DriveBackend {
   void integrateTorque(const DriveCommand& command, double dt) noexcept;
   static double countsPerRevolution(const DriveCommand& command) noexcept;
 
-  double speedRpm_ = 0;
-  double position_ = 0;
-  double iq_ = 0;
-  double id_ = 0;
-  double temperature_ = kAmbientC;
-  double electricalTurns_ = 0;  ///< electrical angle in turns, 0..1
-  double polePairs_ = 4;
-  bool dcMotor_ = false;
-  uint32_t faults_ = 0;
+  /// Everything a step reads and changes; no padding, so that two states compare bit for bit.
+  struct State {
+    double speedRpm = 0;
+    double position = 0;
+    double iq = 0;
+    double id = 0;
+    double temperature = kAmbientC;
+    double electricalTurns = 0;  ///< electrical angle in turns, 0..1
+    double polePairs = 4;
+    uint32_t dcMotor = 0;  ///< 1 for a DC brushed motor
+    uint32_t faults = 0;
+  };
+  static_assert(sizeof(State) == 7 * sizeof(double) + 2 * sizeof(uint32_t), "no padding");
+
+  State s_;
+  bool resting_ = false;
 };
 
 }  // namespace costa::solo

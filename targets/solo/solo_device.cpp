@@ -20,6 +20,18 @@ int32_t roundToInt32(double value) {
   return static_cast<int32_t>(value < 0 ? value - 0.5 : value + 0.5);
 }
 
+/// The same command, field by field (a command has no NaN: every field comes from an integer).
+bool sameCommand(const DriveCommand& a, const DriveCommand& b) {
+  return a.outputEnabled == b.outputEnabled && a.commanding == b.commanding &&
+         a.control == b.control && a.feedback == b.feedback && a.motor == b.motor &&
+         a.speedReferenceRpm == b.speedReferenceRpm && a.clockwise == b.clockwise &&
+         a.accelerationRevPerS2 == b.accelerationRevPerS2 &&
+         a.decelerationRevPerS2 == b.decelerationRevPerS2 && a.speedLimitRpm == b.speedLimitRpm &&
+         a.positionReference == b.positionReference && a.torqueReferenceA == b.torqueReferenceA &&
+         a.idReferenceA == b.idReferenceA && a.currentLimitA == b.currentLimitA &&
+         a.poles == b.poles && a.encoderLines == b.encoderLines;
+}
+
 }  // namespace
 
 SoloDevice::SoloDevice(SoloNode& node, DriveBackend& drive, uint8_t powerOnNodeId,
@@ -88,9 +100,19 @@ void SoloDevice::publish(const DriveFeedback& feedback) noexcept {
 Microseconds SoloDevice::process(Microseconds now) noexcept {
   if (now - simulated_ >= kStep) {  // elapsed time, right across the wrap of the clock
     const DriveCommand c = command();
-    while (now - simulated_ >= kStep) {
-      drive_.step(c, kStep);
-      simulated_ += kStep;
+    if (resting_) {
+      // Nothing moved in the steps since the last call: they were taken under the command the
+      // drive rests under, which a write changes only just before this call (process() follows
+      // every frame).
+      simulated_ += (now - simulated_) / kStep * kStep;
+      resting_ = sameCommand(c, restCommand_);
+    } else {
+      while (now - simulated_ >= kStep) {
+        drive_.step(c, kStep);
+        simulated_ += kStep;
+      }
+      resting_ = drive_.resting();
+      restCommand_ = c;
     }
     DriveFeedback feedback;
     drive_.read(&feedback);
@@ -105,7 +127,14 @@ Microseconds SoloDevice::process(Microseconds now) noexcept {
       storeSfxt(0x300E, inductance);
     }
   }
-  return earliest(at(simulated_, kStep), identifyAt_);
+  return nextDeadline();
+}
+
+Microseconds SoloDevice::nextDeadline() noexcept {
+  if (resting_ && !sameCommand(command(), restCommand_)) {
+    resting_ = false;  // changed since process(): the next step takes the new command
+  }
+  return resting_ ? identifyAt_ : earliest(at(simulated_, kStep), identifyAt_);
 }
 
 AbortCode SoloDevice::prepareRead(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
@@ -177,6 +206,7 @@ void SoloDevice::onResetApplication() noexcept {
   node_.setPendingNodeId(static_cast<uint8_t>(address == 0U ? 1U : address));
   errors_.assign(0);
   simulated_ = node_.now();
+  resting_ = false;  // the defaults just restored are published at the next step
   identifyAt_ = kNever;
 }
 

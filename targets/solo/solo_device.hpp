@@ -30,8 +30,13 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   /// stored, or always when `nodeIdGiven` (DeviceConfig::nodeIdGiven: costa-slave --node-id).
   SoloDevice(SoloNode& node, DriveBackend& drive, uint8_t powerOnNodeId, bool nodeIdGiven) noexcept;
 
-  /// Runs the drive up to `now`; returns the next step.
+  /// Runs the drive up to `now`; returns the next step, or only the identification's end while
+  /// the drive rests (nothing would change until the command does). Call it after every frame:
+  /// a command written while the drive rests takes effect from the next step on.
   Microseconds process(Microseconds now) noexcept;
+  /// The deadline process() returned, checked again: the node's own processing may have changed
+  /// the command since (life guarding stops the drive).
+  Microseconds nextDeadline() noexcept;
 
   /// Called when 0x3014 asks for factory defaults (the target discards stored parameters);
   /// false when that failed: the write answers 0x08000020.
@@ -65,6 +70,9 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   bool nodeIdGiven_;
   Microseconds simulated_ = 0;  ///< time up to which the drive has run
   Microseconds identifyAt_ = kNever;
+  /// The last steps changed nothing under restCommand_: no steps until the command changes.
+  bool resting_ = false;
+  DriveCommand restCommand_;
   FactoryResetHandler factoryReset_ = nullptr;
   void* factoryResetContext_ = nullptr;
   bool attached_;  ///< last: every other member is ready when the node gets the hooks

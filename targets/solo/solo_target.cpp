@@ -39,8 +39,9 @@ bool SoloTarget::discardStoredParameters(void* target) noexcept {
 }
 
 Microseconds SoloTarget::process(Microseconds now) noexcept {
-  const Microseconds deviceNext = device_.process(now);
-  return earliest(deviceNext, node_.process(now));
+  (void)device_.process(now);  // first: the node's PDOs carry what the drive measured now
+  const Microseconds nodeNext = node_.process(now);
+  return earliest(device_.nextDeadline(), nodeNext);
 }
 
 bool SoloTarget::control(const char* command, char* why, size_t whySize) noexcept {
