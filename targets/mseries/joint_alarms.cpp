@@ -60,9 +60,9 @@ void JointAlarms::clear(uint8_t alarm) noexcept {
 
 uint16_t JointAlarms::code() const noexcept {
   uint16_t code = 0;
-  for (const AlarmCondition& condition : kConditions) {
-    if (active(condition.alarm) && condition.alarm > code) {
-      code = condition.alarm;
+  for (size_t i = 0; active_ != 0U && i < sizeof(kConditions) / sizeof(kConditions[0]); ++i) {
+    if ((active_ & (1U << i)) != 0U && kConditions[i].alarm > code) {  // bit i: bitOf()
+      code = kConditions[i].alarm;
     }
   }
   return code;
