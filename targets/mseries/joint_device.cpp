@@ -117,7 +117,7 @@ Microseconds JointDevice::process(Microseconds now) noexcept {
   } else {
     simulated_ = now;
   }
-  publish(joint_.read());
+  // The drive reads none of the published objects: publishing once, after it, is enough.
   drive_.update();
   publish(joint_.read());
   return joint_.moving() ? at(simulated_, kStep) : kNever;
