@@ -126,6 +126,8 @@ TEST_F(Solo, PositionModeStopsExactlyOnTheReferenceWithinTheSpeedLimit) {
     tx 581 [8] 60 1F 30 00 00 00 00 00
   )");
   EXPECT_EQ(position(), 0);
+  EXPECT_TRANSCRIPT("wait 100");  // the drive rested on the reference; it goes back to it
+  EXPECT_GT(position(), 0);
 }
 
 TEST_F(Solo, TorqueModeIqFollowsTheReference) {
@@ -168,8 +170,8 @@ TEST_F(Solo, ASpeedWrittenAfterARestRampsFromTheNextStep) {
   )");
   host::DeviceTarget& target = bus_.target();
   Microseconds now = bus_.now();
-  EXPECT_EQ(target.process(now), kNever);
-  now += 1345000U;  // 134.5 steps later
+  EXPECT_EQ(target.process(now), now + solo::SoloDevice::kLongestRest);  // no step before
+  now += 1345000U;                                                       // 134.5 steps later
   CanFrame speed1000;
   speed1000.id = 0x601;
   speed1000.dlc = 8;
@@ -278,6 +280,28 @@ TEST_F(Solo, OverCurrentSetsTheErrorRegisterStopsTheDriveAndStaysUntilCleared) {
     wait 100
     rx 601 [8] 40 01 10 00 00 00 00 00
     tx 581 [8] 42 01 10 00 00 00 00 00
+  )");
+}
+
+// A drive at rest with its output disabled and a fault whose cause persists: the host clears
+// 0x3020, which does not change what the drive is told (disabled either way), and the fault
+// still comes back as a new event at the next step.
+TEST_F(Solo, AFaultClearedWhileTheDriveRestsComesBackAtTheNextStep) {
+  digitalSpeedMode();
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 22 08 30 00 00 00 00 00   # disable
+    tx 581 [8] 60 08 30 00 00 00 00 00
+    rx 601 [8] 22 03 30 00 00 00 00 00   # current limit 0: over-current protection
+    tx 581 [8] 60 03 30 00 00 00 00 00
+    wait 10
+    tx 081 [8] 00 00 00 03 00 00 00 00
+    wait 1000
+    rx 601 [8] 22 20 30 00 00 00 00 00   # overwrite: the cause is still there
+    tx 581 [8] 60 20 30 00 00 00 00 00
+    wait 10
+    tx 081 [8] 00 00 00 03 00 00 00 00   # a new error event
+    rx 601 [8] 40 20 30 00 00 00 00 00
+    tx 581 [8] 42 20 30 00 01 00 00 00
   )");
 }
 

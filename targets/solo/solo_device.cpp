@@ -92,6 +92,7 @@ void SoloDevice::publish(const DriveFeedback& feedback) noexcept {
   v.x3038_motor_s_angle = sfxtFromDouble(feedback.anglePerUnit);
   v.x3039_board_temperature = sfxtFromDouble(feedback.boardTemperatureC);
   v.x3049_digital_inputs_register = feedback.digitalInputs;
+  publishedFaults_ = feedback.faults;
   if ((feedback.faults & ~errors_.value()) != 0U) {
     errors_.set(feedback.faults);  // a new fault event (also after the host cleared it)
   }
@@ -101,22 +102,21 @@ Microseconds SoloDevice::process(Microseconds now) noexcept {
   if (now - simulated_ >= kStep) {  // elapsed time, right across the wrap of the clock
     const DriveCommand c = command();
     if (resting_) {
-      // Nothing moved in the steps since the last call: they were taken under the command the
-      // drive rests under, which a write changes only just before this call (process() follows
-      // every frame).
+      // The steps since the last call changed nothing and published nothing new: they were
+      // due before whatever changed since (process() follows every frame), and are skipped.
       simulated_ += (now - simulated_) / kStep * kStep;
-      resting_ = sameCommand(c, restCommand_);
+      resting_ = stillResting(c);
     } else {
       while (now - simulated_ >= kStep) {
         drive_.step(c, kStep);
         simulated_ += kStep;
       }
-      resting_ = drive_.resting();
+      DriveFeedback feedback;
+      drive_.read(&feedback);
+      publish(feedback);
       restCommand_ = c;
+      resting_ = stillResting(c);
     }
-    DriveFeedback feedback;
-    drive_.read(&feedback);
-    publish(feedback);
   }
   if (reached(now, identifyAt_)) {
     identifyAt_ = kNever;
@@ -130,11 +130,19 @@ Microseconds SoloDevice::process(Microseconds now) noexcept {
   return nextDeadline();
 }
 
+bool SoloDevice::stillResting(const DriveCommand& command) const noexcept {
+  // A fault the register no longer shows (the host cleared it) comes back at the next step.
+  return drive_.resting() && sameCommand(command, restCommand_) &&
+         (publishedFaults_ & ~errors_.value()) == 0U;
+}
+
 Microseconds SoloDevice::nextDeadline() noexcept {
-  if (resting_ && !sameCommand(command(), restCommand_)) {
-    resting_ = false;  // changed since process(): the next step takes the new command
+  if (resting_ && !stillResting(command())) {
+    resting_ = false;  // changed since process(): the next step takes the change
   }
-  return resting_ ? identifyAt_ : earliest(at(simulated_, kStep), identifyAt_);
+  // At rest, a step now and then all the same, so that the time since the last step never
+  // wraps the 32-bit clock.
+  return earliest(at(simulated_, resting_ ? kLongestRest : kStep), identifyAt_);
 }
 
 AbortCode SoloDevice::prepareRead(od::ObjectDictionary& dictionary, const od::EntryRef& ref,

@@ -25,14 +25,17 @@ class SoloDevice : public ObjectHook, public NodeEvents {
  public:
   /// The drive is simulated in steps of this length.
   static constexpr Microseconds kStep = 10000;
+  /// While the drive rests, process() still asks for a step this often (10 min).
+  static constexpr Microseconds kLongestRest = 60000U * kStep;
 
   /// Attaches itself to `node`. `powerOnNodeId` is the address when 0x3001 holds nothing
   /// stored, or always when `nodeIdGiven` (DeviceConfig::nodeIdGiven: costa-slave --node-id).
   SoloDevice(SoloNode& node, DriveBackend& drive, uint8_t powerOnNodeId, bool nodeIdGiven) noexcept;
 
-  /// Runs the drive up to `now`; returns the next step, or only the identification's end while
-  /// the drive rests (nothing would change until the command does). Call it after every frame:
-  /// a command written while the drive rests takes effect from the next step on.
+  /// Runs the drive up to `now`; returns the next step. While the drive rests (a step changed
+  /// nothing, and nothing it depends on changed since) it asks for a step only every
+  /// kLongestRest. Call it after every frame: a change made while the drive rests takes effect
+  /// from the next step on, as if every step had been taken.
   Microseconds process(Microseconds now) noexcept;
   /// The deadline process() returned, checked again: the node's own processing may have changed
   /// the command since (life guarding stops the drive).
@@ -58,6 +61,9 @@ class SoloDevice : public ObjectHook, public NodeEvents {
 
  private:
   DriveCommand command() const noexcept;
+  /// The drive still rests: the last step changed nothing, and neither the command nor the
+  /// faults the register shows changed since.
+  bool stillResting(const DriveCommand& command) const noexcept;
   void publish(const DriveFeedback& feedback) noexcept;
   void storeSfxt(uint16_t index, double value) noexcept;
   uint32_t readU32(uint16_t index) const noexcept;
@@ -73,6 +79,7 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   /// The last steps changed nothing under restCommand_: no steps until the command changes.
   bool resting_ = false;
   DriveCommand restCommand_;
+  uint32_t publishedFaults_ = 0;  ///< the faults the drive measured at the last step
   FactoryResetHandler factoryReset_ = nullptr;
   void* factoryResetContext_ = nullptr;
   bool attached_;  ///< last: every other member is ready when the node gets the hooks

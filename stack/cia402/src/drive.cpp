@@ -48,19 +48,24 @@ Drive::Drive(Node& node, Axis& axis, const DriveOptions& options) noexcept
     : node_(node),
       axis_(axis),
       options_(options),
+      located_(locate(node.dictionary())),
       attached_(node.attachHook(object::kControlword, object::kControlword, *this) &&
                 node.attachHook(object::kModes, object::kModes, *this) &&
                 node.attachHook(object::kTargetPosition, object::kTargetPosition, *this) &&
-                node.addListener(*this)) {
+                node.addListener(*this)) {}
+
+Drive::Located Drive::locate(const od::ObjectDictionary& dictionary) noexcept {
   static_assert(sizeof(kLocated) / sizeof(kLocated[0]) == kLocatedCount, "one entry a slot");
+  Located located;
   for (size_t i = 0; i < kLocatedCount; ++i) {
-    located_[i] = node.dictionary().find(kLocated[i], 0);
+    located.refs[i] = dictionary.find(kLocated[i], 0);
   }
+  return located;
 }
 
 const od::EntryRef* Drive::located(uint16_t index, uint8_t subIndex) const noexcept {
   const size_t slot = locatedSlot(index);
-  return subIndex == 0U && slot != kNotLocated ? &located_[slot] : nullptr;
+  return subIndex == 0U && slot != kNotLocated ? &located_.refs[slot] : nullptr;
 }
 
 int64_t Drive::read(uint16_t index, uint8_t subIndex, int64_t fallback) const noexcept {

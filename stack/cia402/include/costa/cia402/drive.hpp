@@ -140,7 +140,11 @@ class Drive : public ObjectHook, public NodeEvents {
   /// 0x6040, 0x6041, 0x6060, 0x6061, 0x6064, 0x606C, 0x6081, 0x6083, 0x6084, 0x6085, 0x60FF
   /// (sub-index 0), found in the dictionary once: an entry it lacks stays not valid.
   static constexpr size_t kLocatedCount = 11;
-  od::EntryRef located_[kLocatedCount];
+  struct Located {
+    od::EntryRef refs[kLocatedCount];
+  };
+  static Located locate(const od::ObjectDictionary& dictionary) noexcept;
+  Located located_;
   bool attached_;  ///< last: every other member is ready when the node gets the hooks
 };
 
