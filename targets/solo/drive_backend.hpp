@@ -66,10 +66,13 @@ class DriveBackend {
     (void)command;
     (void)elapsed;
   }
-  /// True when the last step changed nothing and every further step under the same command will
-  /// change nothing either: the device then stops stepping until the command changes. A
-  /// simulation can tell; hardware cannot (its motor turns on its own), and is stepped always.
-  virtual bool resting() const noexcept { return false; }
+  /// True when a step under `command` would change nothing, nor would any further one: the
+  /// device then stops stepping until that changes. A simulation can tell; hardware cannot (its
+  /// motor turns on its own), and is stepped always.
+  virtual bool restsUnder(const DriveCommand& command) const noexcept {
+    (void)command;
+    return false;
+  }
   virtual void read(DriveFeedback* feedback) noexcept { (void)feedback; }
   /// 0x301F: the position counter becomes 0.
   virtual void home() noexcept {}

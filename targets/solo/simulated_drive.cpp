@@ -45,6 +45,18 @@ double approach(double value, double target, double step) {
   return value - step < target ? target : value - step;
 }
 
+/// The same command, field by field (a command has no NaN: every field comes from an integer).
+bool sameCommand(const DriveCommand& a, const DriveCommand& b) {
+  return a.outputEnabled == b.outputEnabled && a.commanding == b.commanding &&
+         a.control == b.control && a.feedback == b.feedback && a.motor == b.motor &&
+         a.speedReferenceRpm == b.speedReferenceRpm && a.clockwise == b.clockwise &&
+         a.accelerationRevPerS2 == b.accelerationRevPerS2 &&
+         a.decelerationRevPerS2 == b.decelerationRevPerS2 && a.speedLimitRpm == b.speedLimitRpm &&
+         a.positionReference == b.positionReference && a.torqueReferenceA == b.torqueReferenceA &&
+         a.idReferenceA == b.idReferenceA && a.currentLimitA == b.currentLimitA &&
+         a.poles == b.poles && a.encoderLines == b.encoderLines;
+}
+
 }  // namespace
 
 double SimulatedDrive::countsPerRevolution(const DriveCommand& command) noexcept {
@@ -71,6 +83,11 @@ void SimulatedDrive::step(const DriveCommand& command, Microseconds elapsed) noe
   }
   // Bit for bit, so that -0.0 is not taken for 0.0, nor a NaN for anything.
   resting_ = memcmp(&before, &s_, sizeof(State)) == 0;
+  lastCommand_ = command;
+}
+
+bool SimulatedDrive::restsUnder(const DriveCommand& command) const noexcept {
+  return resting_ && sameCommand(command, lastCommand_);
 }
 
 void SimulatedDrive::integrate(const DriveCommand& command, double dt) noexcept {

@@ -30,9 +30,10 @@ class SimulatedDrive final : public DriveBackend {
   static constexpr uint32_t kAnalogueInputs[2] = {0, 2048};
 
   void step(const DriveCommand& command, Microseconds elapsed) noexcept override;
-  /// The last step left every part of the state as it was, bit for bit: from that state, every
-  /// step under the same command does the same (the model is deterministic).
-  bool resting() const noexcept override { return resting_; }
+  /// The last step was under `command` and left every part of the state as it was, bit for
+  /// bit: from that state, every step under the same command does the same (the model is
+  /// deterministic).
+  bool restsUnder(const DriveCommand& command) const noexcept override;
   void read(DriveFeedback* feedback) noexcept override;
   void home() noexcept override {
     s_.position = 0;
@@ -63,7 +64,8 @@ class SimulatedDrive final : public DriveBackend {
   static_assert(sizeof(State) == 7 * sizeof(double) + 2 * sizeof(uint32_t), "no padding");
 
   State s_;
-  bool resting_ = false;
+  bool resting_ = false;      ///< the last step changed nothing
+  DriveCommand lastCommand_;  ///< the command of the last step
 };
 
 }  // namespace costa::solo

@@ -20,18 +20,6 @@ int32_t roundToInt32(double value) {
   return static_cast<int32_t>(value < 0 ? value - 0.5 : value + 0.5);
 }
 
-/// The same command, field by field (a command has no NaN: every field comes from an integer).
-bool sameCommand(const DriveCommand& a, const DriveCommand& b) {
-  return a.outputEnabled == b.outputEnabled && a.commanding == b.commanding &&
-         a.control == b.control && a.feedback == b.feedback && a.motor == b.motor &&
-         a.speedReferenceRpm == b.speedReferenceRpm && a.clockwise == b.clockwise &&
-         a.accelerationRevPerS2 == b.accelerationRevPerS2 &&
-         a.decelerationRevPerS2 == b.decelerationRevPerS2 && a.speedLimitRpm == b.speedLimitRpm &&
-         a.positionReference == b.positionReference && a.torqueReferenceA == b.torqueReferenceA &&
-         a.idReferenceA == b.idReferenceA && a.currentLimitA == b.currentLimitA &&
-         a.poles == b.poles && a.encoderLines == b.encoderLines;
-}
-
 }  // namespace
 
 SoloDevice::SoloDevice(SoloNode& node, DriveBackend& drive, uint8_t powerOnNodeId,
@@ -114,7 +102,6 @@ Microseconds SoloDevice::process(Microseconds now) noexcept {
       DriveFeedback feedback;
       drive_.read(&feedback);
       publish(feedback);
-      restCommand_ = c;
       resting_ = stillResting(c);
     }
   }
@@ -132,8 +119,7 @@ Microseconds SoloDevice::process(Microseconds now) noexcept {
 
 bool SoloDevice::stillResting(const DriveCommand& command) const noexcept {
   // A fault the register no longer shows (the host cleared it) comes back at the next step.
-  return drive_.resting() && sameCommand(command, restCommand_) &&
-         (publishedFaults_ & ~errors_.value()) == 0U;
+  return drive_.restsUnder(command) && (publishedFaults_ & ~errors_.value()) == 0U;
 }
 
 Microseconds SoloDevice::nextDeadline() noexcept {

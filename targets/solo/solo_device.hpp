@@ -61,8 +61,8 @@ class SoloDevice : public ObjectHook, public NodeEvents {
 
  private:
   DriveCommand command() const noexcept;
-  /// The drive still rests: the last step changed nothing, and neither the command nor the
-  /// faults the register shows changed since.
+  /// The drive still rests: it rests under `command` (DriveBackend::restsUnder), and the
+  /// register shows every fault it measured.
   bool stillResting(const DriveCommand& command) const noexcept;
   void publish(const DriveFeedback& feedback) noexcept;
   void storeSfxt(uint16_t index, double value) noexcept;
@@ -76,9 +76,8 @@ class SoloDevice : public ObjectHook, public NodeEvents {
   bool nodeIdGiven_;
   Microseconds simulated_ = 0;  ///< time up to which the drive has run
   Microseconds identifyAt_ = kNever;
-  /// The last steps changed nothing under restCommand_: no steps until the command changes.
+  /// The drive rests (stillResting()): no steps until that changes.
   bool resting_ = false;
-  DriveCommand restCommand_;
   uint32_t publishedFaults_ = 0;  ///< the faults the drive measured at the last step
   FactoryResetHandler factoryReset_ = nullptr;
   void* factoryResetContext_ = nullptr;

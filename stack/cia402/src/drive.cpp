@@ -4,85 +4,18 @@
 
 namespace costa::cia402 {
 
-namespace {
-
-/// The objects an evaluation reads or writes every time, in the order of Drive::located_.
-constexpr uint16_t kLocated[] = {
-    object::kControlword,           object::kStatusword,          object::kModes,
-    object::kModesDisplay,          object::kPositionActual,      object::kVelocityActual,
-    object::kProfileVelocity,       object::kProfileAcceleration, object::kProfileDeceleration,
-    object::kQuickStopDeceleration, object::kTargetVelocity};
-
-/// Where kLocated has `index`; kNotLocated when it does not.
-constexpr size_t kNotLocated = SIZE_MAX;
-constexpr size_t locatedSlot(uint16_t index) noexcept {
-  switch (index) {
-    case object::kControlword: return 0;
-    case object::kStatusword: return 1;
-    case object::kModes: return 2;
-    case object::kModesDisplay: return 3;
-    case object::kPositionActual: return 4;
-    case object::kVelocityActual: return 5;
-    case object::kProfileVelocity: return 6;
-    case object::kProfileAcceleration: return 7;
-    case object::kProfileDeceleration: return 8;
-    case object::kQuickStopDeceleration: return 9;
-    case object::kTargetVelocity: return 10;
-    default: return kNotLocated;
-  }
-}
-
-constexpr bool slotsMatch() noexcept {
-  for (size_t i = 0; i < sizeof(kLocated) / sizeof(kLocated[0]); ++i) {
-    if (locatedSlot(kLocated[i]) != i) {
-      return false;
-    }
-  }
-  return true;
-}
-static_assert(slotsMatch(), "locatedSlot() gives each object of kLocated its place");
-
-}  // namespace
-
 Drive::Drive(Node& node, Axis& axis, const DriveOptions& options) noexcept
     : node_(node),
       axis_(axis),
       options_(options),
-      located_(locate(node.dictionary())),
       attached_(node.attachHook(object::kControlword, object::kControlword, *this) &&
                 node.attachHook(object::kModes, object::kModes, *this) &&
                 node.attachHook(object::kTargetPosition, object::kTargetPosition, *this) &&
                 node.addListener(*this)) {}
 
-Drive::Located Drive::locate(const od::ObjectDictionary& dictionary) noexcept {
-  static_assert(sizeof(kLocated) / sizeof(kLocated[0]) == kLocatedCount, "one entry a slot");
-  Located located;
-  for (size_t i = 0; i < kLocatedCount; ++i) {
-    located.refs[i] = dictionary.find(kLocated[i], 0);
-  }
-  return located;
-}
-
-const od::EntryRef* Drive::located(uint16_t index, uint8_t subIndex) const noexcept {
-  const size_t slot = locatedSlot(index);
-  return subIndex == 0U && slot != kNotLocated ? &located_.refs[slot] : nullptr;
-}
-
 int64_t Drive::read(uint16_t index, uint8_t subIndex, int64_t fallback) const noexcept {
-  const od::ObjectDictionary& dictionary = node_.dictionary();
-  const od::EntryRef* ref = located(index, subIndex);
-  if (ref == nullptr) {
-    return static_cast<int64_t>(
-        dictionary.readUnsigned(index, subIndex, static_cast<uint64_t>(fallback)));
-  }
-  return ref->valid() ? static_cast<int64_t>(dictionary.readUnsigned(*ref)) : fallback;
-}
-
-void Drive::store(uint16_t index, uint64_t value) noexcept {
-  const od::EntryRef* ref = located(index, 0);
-  if (ref != nullptr && ref->valid()) {
-    node_.dictionary().storeUnsigned(*ref, value);
-  }
+  return static_cast<int64_t>(
+      node_.dictionary().readUnsigned(index, subIndex, static_cast<uint64_t>(fallback)));
 }
 
 bool Drive::supported(int8_t mode) const noexcept {
@@ -210,6 +143,7 @@ void Drive::runStateMachine(uint16_t controlword, AxisState* axis) noexcept {
 }
 
 void Drive::evaluate() noexcept {
+  od::ObjectDictionary& dictionary = node_.dictionary();
   auto controlword = static_cast<uint16_t>(read(object::kControlword, 0, 0));
   AxisState axis = axis_.state();
   runStateMachine(controlword, &axis);
@@ -229,10 +163,10 @@ void Drive::evaluate() noexcept {
   complete(axis);  // a set-point already reached ends at once
   lastControlword_ = controlword;
   const uint16_t status = statusOf(controlword, axis);
-  store(object::kModesDisplay, static_cast<uint64_t>(mode_));
-  store(object::kPositionActual, static_cast<uint64_t>(axis.position));
-  store(object::kVelocityActual, static_cast<uint64_t>(axis.velocity));
-  store(object::kStatusword, status);
+  dictionary.storeUnsigned(object::kModesDisplay, 0, static_cast<uint64_t>(mode_));
+  dictionary.storeUnsigned(object::kPositionActual, 0, static_cast<uint64_t>(axis.position));
+  dictionary.storeUnsigned(object::kVelocityActual, 0, static_cast<uint64_t>(axis.velocity));
+  dictionary.storeUnsigned(object::kStatusword, 0, status);
   if (status != statusword_ || mode_ != shownMode_) {
     const bool modeChanged = mode_ != shownMode_;
     const bool statusChanged = status != statusword_;

@@ -84,7 +84,7 @@ uint16_t Drive::takeEvents(uint16_t controlword, const AxisState& axis) noexcept
       takeSetPoint(controlword, axis);
       if (edge && options_.newSetPointClears) {
         controlword = static_cast<uint16_t>(controlword & ~control::kNewSetPoint);
-        store(object::kControlword, controlword);
+        node_.dictionary().storeUnsigned(object::kControlword, 0, controlword);
       }
     }
   }

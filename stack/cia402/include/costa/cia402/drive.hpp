@@ -18,8 +18,7 @@
 //                           reached within the cycle 0x60C2; status 12 ip mode active
 // Halt (bit 8) stops with the profile deceleration; quick stop with 0x6085 (else 0x6084, 0x6083).
 //
-// Context: the one that runs the node. No allocation; every call is O(1) dictionary lookups (the
-// objects of every evaluation are located once, when the drive is made).
+// Context: the one that runs the node. No allocation; every call is O(1) dictionary lookups.
 #pragma once
 
 #include <stdint.h>
@@ -99,13 +98,7 @@ class Drive : public ObjectHook, public NodeEvents {
   /// Status bits 12 (attained) and 13 (error) of homing.
   uint16_t homingStatus() const noexcept;
   bool supported(int8_t mode) const noexcept;
-  /// The value of `index`:`subIndex` as a signed number; `fallback` when the dictionary has no
-  /// such entry. The objects of every evaluation are located once (located_), others looked up.
   int64_t read(uint16_t index, uint8_t subIndex, int64_t fallback) const noexcept;
-  /// Stores into one of the located objects (sub-index 0) when the dictionary has it.
-  void store(uint16_t index, uint64_t value) noexcept;
-  /// Where located_ keeps `index`:`subIndex`, or nullptr when it is not one of them.
-  const od::EntryRef* located(uint16_t index, uint8_t subIndex) const noexcept;
   uint32_t deceleration(uint16_t first) const noexcept;
   uint32_t interpolationPeriod() const noexcept;
 
@@ -137,14 +130,6 @@ class Drive : public ObjectHook, public NodeEvents {
   bool modeWritten_ = false;
   bool hold_ = false;
   AxisCommand commanded_{};
-  /// 0x6040, 0x6041, 0x6060, 0x6061, 0x6064, 0x606C, 0x6081, 0x6083, 0x6084, 0x6085, 0x60FF
-  /// (sub-index 0), found in the dictionary once: an entry it lacks stays not valid.
-  static constexpr size_t kLocatedCount = 11;
-  struct Located {
-    od::EntryRef refs[kLocatedCount];
-  };
-  static Located locate(const od::ObjectDictionary& dictionary) noexcept;
-  Located located_;
   bool attached_;  ///< last: every other member is ready when the node gets the hooks
 };
 
