@@ -81,9 +81,18 @@ void SimulatedDrive::step(const DriveCommand& command, Microseconds elapsed) noe
     integrate(command, static_cast<double>(slice) / 1e6);
     elapsed -= slice;
   }
-  // Bit for bit, so that -0.0 is not taken for 0.0, nor a NaN for anything.
-  resting_ = memcmp(&before, &s_, sizeof(State)) == 0;
+  resting_ = before.sameBits(s_);
   lastCommand_ = command;
+}
+
+bool SimulatedDrive::State::sameBits(const State& other) const noexcept {
+  // Copied into bytes and compared there: bit for bit, so that -0.0 is not taken for 0.0, nor
+  // a NaN for anything.
+  unsigned char mine[sizeof(State)];
+  unsigned char theirs[sizeof(State)];
+  memcpy(mine, this, sizeof(State));
+  memcpy(theirs, &other, sizeof(State));
+  return memcmp(mine, theirs, sizeof(State)) == 0;
 }
 
 bool SimulatedDrive::restsUnder(const DriveCommand& command) const noexcept {
