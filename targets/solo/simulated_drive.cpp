@@ -81,18 +81,11 @@ void SimulatedDrive::step(const DriveCommand& command, Microseconds elapsed) noe
     integrate(command, static_cast<double>(slice) / 1e6);
     elapsed -= slice;
   }
-  resting_ = before.sameBits(s_);
+  // Bit for bit on purpose, so that -0.0 is not taken for 0.0, nor a NaN for anything; State
+  // has no padding (static_assert in the header).
+  // NOLINTNEXTLINE(bugprone-suspicious-memory-comparison,cert-exp42-c,cert-flp37-c)
+  resting_ = memcmp(&before, &s_, sizeof(State)) == 0;
   lastCommand_ = command;
-}
-
-bool SimulatedDrive::State::sameBits(const State& other) const noexcept {
-  // Copied into bytes and compared there: bit for bit, so that -0.0 is not taken for 0.0, nor
-  // a NaN for anything.
-  unsigned char mine[sizeof(State)];
-  unsigned char theirs[sizeof(State)];
-  memcpy(mine, this, sizeof(State));
-  memcpy(theirs, &other, sizeof(State));
-  return memcmp(mine, theirs, sizeof(State)) == 0;
 }
 
 bool SimulatedDrive::restsUnder(const DriveCommand& command) const noexcept {

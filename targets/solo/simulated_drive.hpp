@@ -60,9 +60,6 @@ class SimulatedDrive final : public DriveBackend {
     double polePairs = 4;
     uint32_t dcMotor = 0;  ///< 1 for a DC brushed motor
     uint32_t faults = 0;
-
-    /// The same state, bit for bit.
-    bool sameBits(const State& other) const noexcept;
   };
   static_assert(sizeof(State) == 7 * sizeof(double) + 2 * sizeof(uint32_t), "no padding");
 
