@@ -23,6 +23,17 @@ class Solo : public DeviceTest {
   double speed() { return static_cast<double>(static_cast<int32_t>(value(0x3036, 0))); }
   int32_t position() { return static_cast<int32_t>(value(0x3037, 0)); }
 
+  /// Node guarding: guard time 100 ms, life time factor 2.
+  void lifeTime200ms() {
+    ASSERT_EQ(play(R"(
+      rx 601 [8] 22 0C 10 00 64 00 00 00
+      tx 581 [8] 60 0C 10 00 00 00 00 00
+      rx 601 [8] 22 0D 10 00 02 00 00 00
+      tx 581 [8] 60 0D 10 00 00 00 00 00
+    )"),
+              "");
+  }
+
   /// Digital speed control of a BLDC with encoders, as in the manual's first speed example.
   void digitalSpeedMode() {
     ASSERT_EQ(play(R"(
@@ -191,11 +202,8 @@ TEST_F(Solo, ASpeedWrittenAfterARestRampsFromTheNextStep) {
 // at rest then asks for its next step again, so that the stop is stepped as before.
 TEST_F(Solo, LifeGuardingExpiringOverADriveAtRestAsksForTheNextStep) {
   digitalSpeedMode();
+  lifeTime200ms();
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 22 0C 10 00 64 00 00 00   # guard time 100 ms
-    tx 581 [8] 60 0C 10 00 00 00 00 00
-    rx 601 [8] 22 0D 10 00 02 00 00 00   # life time factor 2
-    tx 581 [8] 60 0D 10 00 00 00 00 00
     rx 701 [0] RTR
     tx 701 [1] FF
   )");
@@ -307,11 +315,8 @@ TEST_F(Solo, AFaultClearedWhileTheDriveRestsComesBackAtTheNextStep) {
 
 TEST_F(Solo, LifeTimeExpiryStopsTheDriveUntilTheErrorRegisterIsCleared) {
   digitalSpeedMode();
+  lifeTime200ms();
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 22 0C 10 00 64 00 00 00   # guard time 100 ms
-    tx 581 [8] 60 0C 10 00 00 00 00 00
-    rx 601 [8] 22 0D 10 00 02 00 00 00   # life time factor 2
-    tx 581 [8] 60 0D 10 00 00 00 00 00
     rx 601 [8] 22 05 30 00 E8 03 00 00
     tx 581 [8] 60 05 30 00 00 00 00 00
     rx 701 [0] RTR

@@ -6,6 +6,16 @@ namespace {
 
 using Sync = ExampleNodeTest;
 
+/// This node produces SYNC every 10 ms, with a counter 1..3.
+constexpr const char* kProducerCounting1To3Every10ms = R"(
+    rx 601 [8] 2F 19 10 00 03 00 00 00   # counter 1..3
+    tx 581 [8] 60 19 10 00 00 00 00 00
+    rx 601 [8] 23 06 10 00 10 27 00 00   # period 10000 us
+    tx 581 [8] 60 06 10 00 00 00 00 00
+    rx 601 [8] 23 05 10 00 80 00 00 40   # bit 30: this node produces
+    tx 581 [8] 60 05 10 00 00 00 00 00
+)";
+
 constexpr const char* kTpdo1EverySync = R"(
     rx 601 [8] 2F 00 18 02 01 00 00 00
     tx 581 [8] 60 00 18 02 00 00 00 00
@@ -32,13 +42,8 @@ TEST_F(Sync, CounterSettingExpectsOneByte) {
 }
 
 TEST_F(Sync, ProducerSendsEveryPeriodWithItsCounter) {
+  EXPECT_TRANSCRIPT(kProducerCounting1To3Every10ms);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 2F 19 10 00 03 00 00 00   # counter 1..3
-    tx 581 [8] 60 19 10 00 00 00 00 00
-    rx 601 [8] 23 06 10 00 10 27 00 00   # period 10000 us
-    tx 581 [8] 60 06 10 00 00 00 00 00
-    rx 601 [8] 23 05 10 00 80 00 00 40   # bit 30: this node produces
-    tx 581 [8] 60 05 10 00 00 00 00 00
     wait 9
     silence
     wait 1
@@ -56,13 +61,8 @@ TEST_F(Sync, ProducerSendsEveryPeriodWithItsCounter) {
 }
 
 TEST_F(Sync, TheProducersCounterStartsOverAfterStopped) {
+  EXPECT_TRANSCRIPT(kProducerCounting1To3Every10ms);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 2F 19 10 00 03 00 00 00   # counter 1..3
-    tx 581 [8] 60 19 10 00 00 00 00 00
-    rx 601 [8] 23 06 10 00 10 27 00 00   # period 10000 us
-    tx 581 [8] 60 06 10 00 00 00 00 00
-    rx 601 [8] 23 05 10 00 80 00 00 40   # bit 30: this node produces
-    tx 581 [8] 60 05 10 00 00 00 00 00
     wait 10
     tx 080 [1] 01
     wait 10
