@@ -118,5 +118,24 @@ TEST_F(SantengSpeed, CountsAndCurrentsFollowTheMotor) {
   EXPECT_EQ(read32(0x2105, 1), 0);
 }
 
+TEST_F(SantengSpeed, TheCurrentOfARampEndsWithTheRamp) {
+  // Motor current: speed / 50 RPM plus 1 A x 10 per 500 units of ramp in the last millisecond;
+  // the default ramps (10000) change the speed by 10000 units (1 RPM) a millisecond: 2 A.
+  write(0x2000, 1, 1000);
+  wait(500);
+  EXPECT_EQ(read16(0x2100, 1), 30);  // 500 RPM: 1 A, and 2 A of acceleration
+  wait(500);
+  EXPECT_EQ(read16(0x2103, 1), 1000);
+  EXPECT_EQ(read16(0x2100, 1), 40);  // the last millisecond of the ramp still accelerated
+  wait(1);
+  EXPECT_EQ(read16(0x2100, 1), 20);  // 1000 RPM, no acceleration any more
+  write(0x2000, 1, 0);
+  wait(1000);
+  EXPECT_EQ(read16(0x2103, 1), 0);
+  EXPECT_EQ(read16(0x2100, 1), 20);  // the last millisecond still braked
+  wait(1);
+  EXPECT_EQ(read16(0x2100, 1), 0);  // at rest: no current
+}
+
 }  // namespace
 }  // namespace costa::test

@@ -37,7 +37,23 @@ int16_t clamp16(int64_t x, int64_t limit) {
 void SimulatedChannel::reset() noexcept {
   const bool stalled = stalled_;
   *this = SimulatedChannel{};
-  stalled_ = stalled;
+  setStalled(stalled);
+}
+
+void SimulatedChannel::run(const ChannelCommand& command, Microseconds elapsed) noexcept {
+  bool changed = false;
+  for (Microseconds left = elapsed; left >= 1000U; left -= 1000U) {
+    if (atRest(command)) {
+      changed = changed || change_ != 0;
+      change_ = 0;  // nothing changes any more in this step: no acceleration either
+      break;
+    }
+    stepMillisecond(command);
+    changed = true;
+  }
+  if (changed) {
+    measure();
+  }
 }
 
 int64_t SimulatedChannel::positionTarget(const ChannelCommand& command) const noexcept {
@@ -111,8 +127,9 @@ void SimulatedChannel::move(const ChannelCommand& command) noexcept {
   count_ += counts;
 }
 
-void SimulatedChannel::read(ChannelReading* reading) const noexcept {
-  const int64_t unitsPerMille = int64_t{maxRpm_} * (kUnitsPerRpm / 1000);
+void SimulatedChannel::measure() noexcept {
+  // 0x5002 is 1..65535; a 0 that reached the channel otherwise counts as 1 RPM.
+  const int64_t unitsPerMille = int64_t{maxRpm_ == 0U ? 1U : maxRpm_} * (kUnitsPerRpm / 1000);
   ChannelReading out;
   out.speedRpm = static_cast<int32_t>(actual_ / kUnitsPerRpm);
   out.appliedPermille = clamp16(ramped_ / unitsPerMille, 1000);
@@ -130,7 +147,7 @@ void SimulatedChannel::read(ChannelReading* reading) const noexcept {
     out.motorFlags = static_cast<uint8_t>(kMotorStalled |
                                           (mode_ != ChannelMode::kOpenLoopSpeed ? kLoopError : 0U));
   }
-  *reading = out;
+  reading_ = out;
 }
 
 }  // namespace costa::santeng

@@ -30,15 +30,21 @@ class SimulatedChannel {
   static constexpr int64_t kCoastRate = 10000;
   static constexpr int64_t kHallCountsPerRevolution = 24;
 
-  /// One millisecond under `command`.
-  void stepMillisecond(const ChannelCommand& command) noexcept;
+  /// `elapsed` (whole milliseconds) under `command`, in steps of 1 ms; the time left once the
+  /// channel is at rest passes without steps.
+  void run(const ChannelCommand& command, Microseconds elapsed) noexcept;
   /// Nothing would change in a step under `command`.
   bool atRest(const ChannelCommand& command) const noexcept;
-  /// The time passes without a step (atRest()): no acceleration any more.
-  void rest() noexcept { change_ = 0; }
-  void read(ChannelReading* reading) const noexcept;
-  void loadCounter(int32_t count) noexcept { count_ = count; }
-  void setStalled(bool stalled) noexcept { stalled_ = stalled; }
+  /// What the channel measures now (kept up to date as its state changes).
+  const ChannelReading& reading() const noexcept { return reading_; }
+  void loadCounter(int32_t count) noexcept {
+    count_ = count;
+    measure();
+  }
+  void setStalled(bool stalled) noexcept {
+    stalled_ = stalled;
+    measure();
+  }
   bool stalled() const noexcept { return stalled_; }
   /// Power-on: at rest, counters 0 (the stall stays: it is the motor's).
   void reset() noexcept;
@@ -47,8 +53,12 @@ class SimulatedChannel {
   /// The speed the command asks for now, in units.
   int64_t targetSpeed(const ChannelCommand& command) const noexcept;
   int64_t positionTarget(const ChannelCommand& command) const noexcept;
+  /// One millisecond under `command`.
+  void stepMillisecond(const ChannelCommand& command) noexcept;
   /// Counts of this millisecond; in count position mode, arrival on the target.
   void move(const ChannelCommand& command) noexcept;
+  /// reading_ from the state.
+  void measure() noexcept;
 
   int64_t ramped_ = 0;  ///< the command after the ramps, units
   int64_t actual_ = 0;  ///< the motor's speed, units
@@ -60,6 +70,7 @@ class SimulatedChannel {
   uint16_t maxRpm_ = 1000;
   ChannelMode mode_ = ChannelMode::kOpenLoopSpeed;
   bool stalled_ = false;
+  ChannelReading reading_;  ///< all 0: at rest, counters 0, not stalled
 };
 
 }  // namespace costa::santeng

@@ -5,15 +5,7 @@ namespace costa::santeng {
 void SimulatedPowerStage::step(const ChannelCommand (&commands)[kChannels],
                                Microseconds elapsed) noexcept {
   for (size_t channel = 0; channel < kChannels; ++channel) {
-    SimulatedChannel& motor = channels_[channel];
-    const ChannelCommand& command = commands[channel];
-    for (Microseconds left = elapsed; left >= 1000U; left -= 1000U) {
-      if (motor.atRest(command)) {
-        motor.rest();  // nothing changes any more in this step
-        break;
-      }
-      motor.stepMillisecond(command);
-    }
+    channels_[channel].run(commands[channel], elapsed);
   }
 }
 
@@ -22,15 +14,14 @@ bool SimulatedPowerStage::atRest(const ChannelCommand (&commands)[kChannels]) co
 }
 
 void SimulatedPowerStage::read(size_t channel, ChannelReading* reading) const noexcept {
-  channels_[channel].read(reading);
+  *reading = channels_[channel].reading();
 }
 
 void SimulatedPowerStage::read(ControllerReading* reading) const noexcept {
   ControllerReading out;
   int32_t batteryAmpsTimes10 = 0;
   for (size_t channel = 0; channel < kChannels; ++channel) {
-    ChannelReading motor;
-    channels_[channel].read(&motor);
+    const ChannelReading& motor = channels_[channel].reading();
     batteryAmpsTimes10 += motor.batteryAmpsTimes10;
     out.temperatures[channel + 1U] = static_cast<int8_t>(
         kAmbientCelsius + (motor.motorAmpsTimes10 < 1000 ? motor.motorAmpsTimes10 / 20 : 50));

@@ -3,15 +3,46 @@
 #include "costa/od/little_endian.hpp"
 
 namespace costa::cia402 {
+namespace {
+
+/// The index of each Drive::Located object, in its order.
+constexpr uint16_t kLocatedIndices[] = {
+    object::kControlword,           object::kStatusword,          object::kModes,
+    object::kModesDisplay,          object::kPositionActual,      object::kVelocityActual,
+    object::kProfileVelocity,       object::kProfileAcceleration, object::kProfileDeceleration,
+    object::kQuickStopDeceleration, object::kTargetVelocity};
+
+}  // namespace
+
+Drive::LocatedObjects::LocatedObjects(const od::ObjectDictionary& dictionary) noexcept {
+  static_assert(sizeof(kLocatedIndices) / sizeof(kLocatedIndices[0]) == kLocatedCount,
+                "one index for each located object");
+  for (size_t i = 0; i < kLocatedCount; ++i) {
+    refs[i] = dictionary.find(kLocatedIndices[i], 0);
+  }
+}
 
 Drive::Drive(Node& node, Axis& axis, const DriveOptions& options) noexcept
     : node_(node),
       axis_(axis),
       options_(options),
+      located_(node.dictionary()),
       attached_(node.attachHook(object::kControlword, object::kControlword, *this) &&
                 node.attachHook(object::kModes, object::kModes, *this) &&
                 node.attachHook(object::kTargetPosition, object::kTargetPosition, *this) &&
                 node.addListener(*this)) {}
+
+int64_t Drive::value(Located object, int64_t fallback) const noexcept {
+  const od::EntryRef& ref = located_.refs[object];
+  return ref.valid() ? static_cast<int64_t>(node_.dictionary().readUnsigned(ref)) : fallback;
+}
+
+void Drive::store(Located object, uint64_t value) noexcept {
+  const od::EntryRef& ref = located_.refs[object];
+  if (ref.valid()) {
+    node_.dictionary().storeUnsigned(ref, value);
+  }
+}
 
 int64_t Drive::read(uint16_t index, uint8_t subIndex, int64_t fallback) const noexcept {
   return static_cast<int64_t>(
@@ -81,7 +112,7 @@ void Drive::onRpdoReceived(uint16_t communicationIndex) noexcept {
 
 void Drive::onSync(uint8_t counter) noexcept {
   (void)counter;
-  const auto controlword = static_cast<uint16_t>(read(object::kControlword, 0, 0));
+  const auto controlword = static_cast<uint16_t>(value(kControlwordAt, 0));
   if (state_ == PowerState::kOperationEnabled && mode_ == kInterpolatedPosition &&
       (options_.ipWithoutEnableBit || (controlword & control::kNewSetPoint) != 0U)) {
     ipTarget_ = static_cast<int32_t>(
@@ -143,11 +174,10 @@ void Drive::runStateMachine(uint16_t controlword, AxisState* axis) noexcept {
 }
 
 void Drive::evaluate() noexcept {
-  od::ObjectDictionary& dictionary = node_.dictionary();
-  auto controlword = static_cast<uint16_t>(read(object::kControlword, 0, 0));
+  auto controlword = static_cast<uint16_t>(value(kControlwordAt, 0));
   AxisState axis = axis_.state();
   runStateMachine(controlword, &axis);
-  const auto requested = static_cast<int8_t>(read(object::kModes, 0, kNoMode));
+  const auto requested = static_cast<int8_t>(value(kModesAt, kNoMode));
   if (requested != mode_ && requested != kNoMode && supported(requested)) {
     changeMode(requested);  // 0: no mode change (CiA 402)
   }
@@ -163,10 +193,10 @@ void Drive::evaluate() noexcept {
   complete(axis);  // a set-point already reached ends at once
   lastControlword_ = controlword;
   const uint16_t status = statusOf(controlword, axis);
-  dictionary.storeUnsigned(object::kModesDisplay, 0, static_cast<uint64_t>(mode_));
-  dictionary.storeUnsigned(object::kPositionActual, 0, static_cast<uint64_t>(axis.position));
-  dictionary.storeUnsigned(object::kVelocityActual, 0, static_cast<uint64_t>(axis.velocity));
-  dictionary.storeUnsigned(object::kStatusword, 0, status);
+  store(kModesDisplayAt, static_cast<uint64_t>(mode_));
+  store(kPositionActualAt, static_cast<uint64_t>(axis.position));
+  store(kVelocityActualAt, static_cast<uint64_t>(axis.velocity));
+  store(kStatuswordAt, status);
   if (status != statusword_ || mode_ != shownMode_) {
     const bool modeChanged = mode_ != shownMode_;
     const bool statusChanged = status != statusword_;

@@ -14,12 +14,11 @@ constexpr bool risen(uint16_t now, uint16_t before, uint16_t bit) noexcept {
 
 }  // namespace
 
-uint32_t Drive::deceleration(uint16_t first) const noexcept {
-  // The first of first, 0x6084, 0x6083 that the dictionary has; 0 (at once) when none.
-  for (uint16_t index = first; index >= object::kProfileAcceleration; --index) {
-    const int64_t value = read(index, 0, -1);
-    if (value >= 0) {
-      return static_cast<uint32_t>(value);
+uint32_t Drive::deceleration(Located first) const noexcept {
+  for (unsigned object = first; object >= kProfileAccelerationAt; --object) {
+    const int64_t found = value(static_cast<Located>(object), -1);
+    if (found >= 0) {
+      return static_cast<uint32_t>(found);
     }
   }
   return 0;
@@ -84,7 +83,7 @@ uint16_t Drive::takeEvents(uint16_t controlword, const AxisState& axis) noexcept
       takeSetPoint(controlword, axis);
       if (edge && options_.newSetPointClears) {
         controlword = static_cast<uint16_t>(controlword & ~control::kNewSetPoint);
-        node_.dictionary().storeUnsigned(object::kControlword, 0, controlword);
+        store(kControlwordAt, controlword);
       }
     }
   }
@@ -110,20 +109,20 @@ uint16_t Drive::takeEvents(uint16_t controlword, const AxisState& axis) noexcept
 AxisCommand Drive::modeMotion() const noexcept {
   AxisCommand command;
   command.motion = Motion::kStop;
-  command.deceleration = deceleration(object::kProfileDeceleration);
+  command.deceleration = deceleration(kProfileDecelerationAt);
   switch (mode_) {
     case kProfilePosition:
       if (setPointTaken_) {
         command.motion = Motion::kPosition;
         command.position = setPoint_;
-        command.velocity = static_cast<int32_t>(read(object::kProfileVelocity, 0, 0));
-        command.acceleration = static_cast<uint32_t>(read(object::kProfileAcceleration, 0, 0));
+        command.velocity = static_cast<int32_t>(value(kProfileVelocityAt, 0));
+        command.acceleration = static_cast<uint32_t>(value(kProfileAccelerationAt, 0));
       }
       break;
     case kProfileVelocity:
       command.motion = Motion::kVelocity;
-      command.velocity = static_cast<int32_t>(read(object::kTargetVelocity, 0, 0));
-      command.acceleration = static_cast<uint32_t>(read(object::kProfileAcceleration, 0, 0));
+      command.velocity = static_cast<int32_t>(value(kTargetVelocityAt, 0));
+      command.acceleration = static_cast<uint32_t>(value(kProfileAccelerationAt, 0));
       break;
     case kHoming:
       if (homingRunning_) {
@@ -136,7 +135,7 @@ AxisCommand Drive::modeMotion() const noexcept {
       if (ipTaken_) {
         command.motion = Motion::kInterpolate;
         command.position = ipTarget_;
-        command.velocity = static_cast<int32_t>(read(object::kProfileVelocity, 0, 0));
+        command.velocity = static_cast<int32_t>(value(kProfileVelocityAt, 0));
         command.period = interpolationPeriod();
       }
       break;
@@ -152,14 +151,14 @@ AxisCommand Drive::motion(uint16_t controlword) const noexcept {
       if (hold_ || (controlword & control::kHalt) != 0U) {
         command.motion = Motion::kStop;
         command.deceleration =
-            hold_ || options_.abruptHalt ? 0U : deceleration(object::kProfileDeceleration);
+            hold_ || options_.abruptHalt ? 0U : deceleration(kProfileDecelerationAt);
         return command;
       }
       return modeMotion();
     case PowerState::kQuickStopActive:
     case PowerState::kFaultReactionActive:
       command.motion = Motion::kStop;
-      command.deceleration = deceleration(object::kQuickStopDeceleration);
+      command.deceleration = deceleration(kQuickStopDecelerationAt);
       return command;
     default:
       if (homingRunning_) {  // started by a mode write (DriveOptions::homingOnModeWrite)
@@ -183,7 +182,7 @@ uint16_t Drive::modeStatus(uint16_t controlword, const AxisState& axis) const no
       break;
     case kProfileVelocity:
       if (enabled && !halted) {
-        reached = axis.velocity == static_cast<int32_t>(read(object::kTargetVelocity, 0, 0));
+        reached = axis.velocity == static_cast<int32_t>(value(kTargetVelocityAt, 0));
       }
       bits = axis.velocity == 0 ? status::kModeBit12 : 0U;  // speed 0
       break;

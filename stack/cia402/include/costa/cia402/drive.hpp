@@ -18,7 +18,8 @@
 //                           reached within the cycle 0x60C2; status 12 ip mode active
 // Halt (bit 8) stops with the profile deceleration; quick stop with 0x6085 (else 0x6084, 0x6083).
 //
-// Context: the one that runs the node. No allocation; every call is O(1) dictionary lookups.
+// Context: the one that runs the node. No allocation; every call is O(1) dictionary lookups (the
+// objects of every evaluation are located once, when the drive is made).
 #pragma once
 
 #include <stdint.h>
@@ -98,8 +99,37 @@ class Drive : public ObjectHook, public NodeEvents {
   /// Status bits 12 (attained) and 13 (error) of homing.
   uint16_t homingStatus() const noexcept;
   bool supported(int8_t mode) const noexcept;
+
+  /// The objects every evaluation reads or writes (sub-index 0), in the order of
+  /// kLocatedIndices (drive.cpp); 0x6083, 0x6084 and 0x6085 in a row, for deceleration().
+  enum Located : uint8_t {
+    kControlwordAt,
+    kStatuswordAt,
+    kModesAt,
+    kModesDisplayAt,
+    kPositionActualAt,
+    kVelocityActualAt,
+    kProfileVelocityAt,
+    kProfileAccelerationAt,
+    kProfileDecelerationAt,
+    kQuickStopDecelerationAt,
+    kTargetVelocityAt,
+    kLocatedCount
+  };
+  /// The Located objects, found in the dictionary once; not valid where it lacks one.
+  struct LocatedObjects {
+    explicit LocatedObjects(const od::ObjectDictionary& dictionary) noexcept;
+    od::EntryRef refs[kLocatedCount];
+  };
+  /// The value of a located object as a signed number; `fallback` when the dictionary lacks it.
+  int64_t value(Located object, int64_t fallback) const noexcept;
+  /// Stores into a located object when the dictionary has it.
+  void store(Located object, uint64_t value) noexcept;
+  /// The same for any other entry, looked up each time.
   int64_t read(uint16_t index, uint8_t subIndex, int64_t fallback) const noexcept;
-  uint32_t deceleration(uint16_t first) const noexcept;
+  /// The first of `first`, 0x6084, 0x6083 (down to kProfileAccelerationAt) that the dictionary
+  /// has; 0 (at once) when none.
+  uint32_t deceleration(Located first) const noexcept;
   uint32_t interpolationPeriod() const noexcept;
 
   Node& node_;
@@ -130,6 +160,7 @@ class Drive : public ObjectHook, public NodeEvents {
   bool modeWritten_ = false;
   bool hold_ = false;
   AxisCommand commanded_{};
+  LocatedObjects located_;
   bool attached_;  ///< last: every other member is ready when the node gets the hooks
 };
 
