@@ -100,8 +100,9 @@ class Drive : public ObjectHook, public NodeEvents {
   uint16_t homingStatus() const noexcept;
   bool supported(int8_t mode) const noexcept;
 
-  /// The objects every evaluation reads or writes (sub-index 0), in the order of
-  /// kLocatedIndices (drive.cpp); 0x6083, 0x6084 and 0x6085 in a row, for deceleration().
+  /// The objects an evaluation reads or writes each time, or may read in its mode (sub-index 0),
+  /// in the order of kLocatedIndices (drive.cpp); 0x6083, 0x6084 and 0x6085 in a row, for
+  /// deceleration().
   enum Located : uint8_t {
     kControlwordAt,
     kStatuswordAt,
