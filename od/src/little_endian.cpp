@@ -1,6 +1,28 @@
 #include "costa/od/little_endian.hpp"
 
+#include "costa/od/bytes.hpp"
+
 namespace costa {
+
+uint64_t loadNative(const uint8_t* address, size_t size) noexcept {
+  switch (size) {
+    case 1: return *address;
+    case 2: return loadAligned<uint16_t>(address);
+    case 4: return loadAligned<uint32_t>(address);
+    case 8: return loadAligned<uint64_t>(address);
+    default: return 0;
+  }
+}
+
+void storeNative(uint8_t* address, uint64_t raw, size_t size) noexcept {
+  switch (size) {
+    case 1: *address = static_cast<uint8_t>(raw); break;
+    case 2: storeAligned(address, static_cast<uint16_t>(raw)); break;
+    case 4: storeAligned(address, static_cast<uint32_t>(raw)); break;
+    case 8: storeAligned(address, raw); break;
+    default: break;
+  }
+}
 
 void storeLittleEndian(uint8_t* destination, uint64_t value, size_t length) noexcept {
   const auto low = static_cast<uint32_t>(value);
@@ -32,10 +54,11 @@ int64_t signExtend(uint64_t raw, size_t length) noexcept {
   if (length >= 8U) {
     return static_cast<int64_t>(raw);
   }
+  // With the bits above the sign cleared, flipping the sign bit and subtracting its weight
+  // leaves a positive value as it is and takes 2^(8 length) from a negative one.
   const uint64_t sign = uint64_t{1} << (8U * length - 1U);
-  const uint64_t mask = (uint64_t{1} << (8U * length)) - 1U;
-  raw &= mask;
-  return (raw & sign) != 0U ? static_cast<int64_t>(raw | ~mask) : static_cast<int64_t>(raw);
+  const uint64_t value = raw & ((sign << 1U) - 1U);
+  return static_cast<int64_t>((value ^ sign) - sign);
 }
 
 }  // namespace costa

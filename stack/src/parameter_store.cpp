@@ -5,16 +5,42 @@
 namespace costa {
 namespace {
 
+/// Moves `*ref` to the next sub-index, in dictionary order, of a row of storage group `group`
+/// that has every attribute of `attributes`; to the first one when `*ref` is not valid. False,
+/// and `*ref` not valid, past the last. A row of another group costs one test, however many
+/// sub-indices it has.
+[[gnu::noinline]] bool nextInGroup(const od::Definition& definition, uint8_t group,
+                                   uint8_t attributes, od::EntryRef* ref) noexcept {
+  size_t objectAt = 0;
+  size_t rowAt = 0;
+  unsigned step = 0;
+  if (ref->valid()) {  // the sub-index after it
+    objectAt = static_cast<size_t>(ref->object - definition.objects);
+    rowAt = static_cast<size_t>(ref->row - ref->object->rows);
+    step = static_cast<unsigned>(ref->sub - ref->row->subIndex) + 1U;
+  }
+  for (; objectAt < definition.objectCount; ++objectAt, rowAt = 0) {
+    const od::Object& object = definition.objects[objectAt];
+    for (; rowAt < object.rowCount; ++rowAt, step = 0) {
+      const od::SubEntry& row = object.rows[rowAt];
+      if (row.group == group && (row.attributes & attributes) == attributes && step < row.count) {
+        *ref = od::EntryRef{&object, &row, static_cast<uint8_t>(row.subIndex + step)};
+        return true;
+      }
+    }
+  }
+  *ref = od::EntryRef{};
+  return false;
+}
+
 /// Calls `visit(ref, address, size)` for every RAM entry of `group` in dictionary order; stops
 /// at the first false.
 template <typename Visit>
 bool forEachStoredEntry(od::ObjectDictionary& dictionary, uint8_t group, Visit visit) noexcept {
-  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
-    if (ref.group() != group || ref.size() == 0U) {
-      continue;
-    }
+  for (od::EntryRef ref; nextInGroup(dictionary.definition(), group, 0, &ref);) {
     uint8_t* address = dictionary.ramAddress(ref);
-    if (address != nullptr && !visit(ref, address, static_cast<size_t>(ref.size()))) {
+    if (address != nullptr && ref.size() != 0U &&
+        !visit(ref, address, static_cast<size_t>(ref.size()))) {
       return false;
     }
   }
@@ -88,20 +114,23 @@ uint64_t loadedForm(const od::ObjectDictionary& dictionary, const od::EntryRef& 
 /// Whether the region `id` holds a `$NODEID` COB-ID: the one kind of entry whose stored form
 /// format version 2 changed (version 1 stored it without the node-id over all 32 bits).
 bool holdsNodeIdCobId(const od::ObjectDictionary& dictionary, uint16_t id) noexcept {
-  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
+  if (id > UINT8_MAX) {
+    return false;  // a record region's id is never a group's (kRecordRegion)
+  }
+  const auto group = static_cast<uint8_t>(id);
+  for (od::EntryRef ref; nextInGroup(dictionary.definition(), group, od::kNodeIdRelative, &ref);) {
     uint32_t base = 0;
-    if (ref.group() == id && ref.has(od::kNodeIdRelative) && isCobId(dictionary, ref, &base)) {
+    if (isCobId(dictionary, ref, &base)) {
       return true;
     }
   }
-  return false;  // a record region's id is never a group's (kRecordRegion)
+  return false;
 }
 
 /// Adds the node-id to the `$NODEID` entries of `group` after a load (see storedForm()).
 void addNodeIdAfterLoad(od::ObjectDictionary& dictionary, uint8_t group) noexcept {
-  for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
-    if (ref.group() == group && ref.has(od::kNodeIdRelative) &&
-        dictionary.ramAddress(ref) != nullptr) {
+  for (od::EntryRef ref; nextInGroup(dictionary.definition(), group, od::kNodeIdRelative, &ref);) {
+    if (dictionary.ramAddress(ref) != nullptr) {
       dictionary.storeUnsigned(ref, loadedForm(dictionary, ref, dictionary.readUnsigned(ref)));
     }
   }

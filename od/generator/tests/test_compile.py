@@ -134,7 +134,7 @@ class CompileTest(unittest.TestCase):
                                os.path.join(out, "example_od_names.cpp"),
                                *(os.path.join(REPO_ROOT, "od", "src", name)
                                  for name in ("real_limits.cpp", "object_dictionary.cpp",
-                                              "little_endian.cpp"))]
+                                              "dictionary_defaults.cpp", "little_endian.cpp"))]
                     for source in sources:
                         name = os.path.basename(source)
                         obj = os.path.join(work, f"{os.path.basename(compiler)}-{name}.o")

@@ -18,7 +18,7 @@ Drive::LocatedObjects::LocatedObjects(const od::ObjectDictionary& dictionary) no
   static_assert(sizeof(kLocatedIndices) / sizeof(kLocatedIndices[0]) == kLocatedCount,
                 "one index for each located object");
   for (size_t i = 0; i < kLocatedCount; ++i) {
-    refs[i] = dictionary.find(kLocatedIndices[i], 0);
+    values[i] = dictionary.scalar(dictionary.find(kLocatedIndices[i], 0));
   }
 }
 
@@ -33,15 +33,13 @@ Drive::Drive(Node& node, Axis& axis, const DriveOptions& options) noexcept
                 node.addListener(*this)) {}
 
 int64_t Drive::value(Located object, int64_t fallback) const noexcept {
-  const od::EntryRef& ref = located_.refs[object];
-  return ref.valid() ? static_cast<int64_t>(node_.dictionary().readUnsigned(ref)) : fallback;
+  const od::Scalar& located = located_.values[object];
+  return located.valid() ? static_cast<int64_t>(node_.dictionary().readUnsigned(located))
+                         : fallback;
 }
 
 void Drive::store(Located object, uint64_t value) noexcept {
-  const od::EntryRef& ref = located_.refs[object];
-  if (ref.valid()) {
-    node_.dictionary().storeUnsigned(ref, value);
-  }
+  node_.dictionary().storeUnsigned(located_.values[object], value);  // none where absent
 }
 
 int64_t Drive::read(uint16_t index, uint8_t subIndex, int64_t fallback) const noexcept {

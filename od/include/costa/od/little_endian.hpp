@@ -81,6 +81,12 @@ inline uint64_t loadLittleEndian(const uint8_t* source, size_t length) noexcept 
   return loadLittleEndianBytes(source, length);
 }
 
+/// The native bytes (CPU byte order) of a numeric value in a dictionary's value block: 1, 2, 4
+/// or 8 of them, aligned as loadAligned() wants, zero-extended to 64 bits; 0 for another size.
+uint64_t loadNative(const uint8_t* address, size_t size) noexcept;
+/// Stores the low `size` bytes of `raw` as loadNative() loads them; nothing for another size.
+void storeNative(uint8_t* address, uint64_t raw, size_t size) noexcept;
+
 /// Sign-extends the low `length` bytes of `raw`. `length` in 1..8 (0 gives 0).
 int64_t signExtend(uint64_t raw, size_t length) noexcept;
 

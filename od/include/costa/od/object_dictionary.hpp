@@ -9,6 +9,7 @@
 #include "costa/od/definition.hpp"
 #include "costa/od/entry_ref.hpp"
 #include "costa/od/little_endian.hpp"
+#include "costa/od/scalar.hpp"
 
 namespace costa::od {
 
@@ -105,6 +106,48 @@ class ObjectDictionary {
   /// Stores a numeric value without any check (the caller knows it is valid). No-op for ROM
   /// entries and non-integer types.
   void storeUnsigned(const EntryRef& ref, uint64_t value) noexcept;
+
+  /// `ref` resolved for the two below (see Scalar); not valid when `ref` is not. O(1).
+  Scalar scalar(const EntryRef& ref) const noexcept;
+  /// readUnsigned(ref) of the entry `scalar` was resolved from: a load and, for a signed type,
+  /// a sign extension. `scalar` is valid. The usual case (a value of 1, 2 or 4 bytes in RAM,
+  /// not built for size) is inline.
+  uint64_t readUnsigned(const Scalar& scalar) const noexcept {
+    if (kExpandFastPaths && (scalar.flags_ & Scalar::kInRom) == 0U) {
+      const uint8_t* value = values_ + scalar.offset_;
+      uint64_t raw = 0;
+      switch (scalar.size_) {
+        case 1: raw = *value; break;
+        case 2: raw = loadAligned<uint16_t>(value); break;
+        case 4: raw = loadAligned<uint32_t>(value); break;
+        default: return readScalar(scalar);
+      }
+      if ((scalar.flags_ & Scalar::kSigned) == 0U) {
+        return raw;
+      }
+      const unsigned unused = 64U - 8U * scalar.size_;
+      return static_cast<uint64_t>(static_cast<int64_t>(raw << unused) >> unused);
+    }
+    return readScalar(scalar);
+  }
+  /// storeUnsigned(ref, value) of the entry `scalar` was resolved from: a store into RAM; none
+  /// for ROM, for a type that is not an integer or boolean, or when `scalar` is not valid.
+  void storeUnsigned(const Scalar& scalar, uint64_t value) noexcept {
+    if (kExpandFastPaths && (scalar.flags_ & Scalar::kInRom) == 0U) {
+      uint8_t* target = values_ + scalar.offset_;
+      switch (scalar.size_) {
+        case 1: *target = static_cast<uint8_t>(value); return;
+        case 2: storeAligned(target, static_cast<uint16_t>(value)); return;
+        case 4: storeAligned(target, static_cast<uint32_t>(value)); return;
+        default: break;
+      }
+    }
+    storeScalar(scalar, value);
+  }
+
+  /// The same two, every case out of line: what a build for size calls.
+  uint64_t readScalar(const Scalar& scalar) const noexcept;
+  void storeScalar(const Scalar& scalar, uint64_t value) noexcept;
 
   /// Convenience lookups for the stack's own objects: value of (index, sub) or `fallback` when
   /// absent.

@@ -117,10 +117,11 @@ class Drive : public ObjectHook, public NodeEvents {
     kTargetVelocityAt,
     kLocatedCount
   };
-  /// The Located objects, found in the dictionary once; not valid where it lacks one.
+  /// The Located objects, found in the dictionary and resolved once; not valid where it lacks
+  /// one.
   struct LocatedObjects {
     explicit LocatedObjects(const od::ObjectDictionary& dictionary) noexcept;
-    od::EntryRef refs[kLocatedCount];
+    od::Scalar values[kLocatedCount];
   };
   /// The value of a located object as a signed number; `fallback` when the dictionary lacks it.
   int64_t value(Located object, int64_t fallback) const noexcept;

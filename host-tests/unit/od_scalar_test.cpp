@@ -1,0 +1,98 @@
+// A Scalar (an entry resolved once) reads and stores exactly what its EntryRef does, for every
+// entry of the example dictionary: each type, ROM and RAM, `$NODEID` constants.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "costa/od/object_dictionary.hpp"
+#include "example_od.hpp"
+
+namespace costa::od {
+namespace {
+
+class ScalarTest : public ::testing::Test {
+ protected:
+  ScalarTest()
+      : byRef_(gen::example::kDefinition, &refValues_),
+        byScalar_(gen::example::kDefinition, &scalarValues_) {
+    for (ObjectDictionary* dictionary : {&byRef_, &byScalar_}) {
+      dictionary->setNodeId(5);
+      dictionary->restoreDefaults(0x0000, 0xFFFF);
+    }
+  }
+  gen::example::Values refValues_{};
+  gen::example::Values scalarValues_{};
+  ObjectDictionary byRef_;
+  ObjectDictionary byScalar_;
+};
+
+TEST_F(ScalarTest, ReadsAsItsEntryForEveryEntryAndNodeId) {
+  size_t integers = 0;
+  for (const EntryRef& ref : Entries(gen::example::kDefinition)) {
+    const Scalar scalar = byRef_.scalar(ref);
+    ASSERT_TRUE(scalar.valid());
+    for (const uint8_t nodeId : {uint8_t{5}, uint8_t{0x7F}}) {
+      byRef_.setNodeId(nodeId);  // a `$NODEID` constant follows the node-id of the read
+      EXPECT_EQ(byRef_.readUnsigned(scalar), byRef_.readUnsigned(ref))
+          << std::hex << ref.index() << ":" << unsigned{ref.subIndex()};
+      // The out-of-line path, which a build for size takes for every read.
+      EXPECT_EQ(byRef_.readScalar(scalar), byRef_.readUnsigned(ref))
+          << std::hex << ref.index() << ":" << unsigned{ref.subIndex()};
+    }
+    byRef_.setNodeId(5);
+    integers += isSigned(ref.type()) || isUnsigned(ref.type()) ? 1U : 0U;
+  }
+  EXPECT_GT(integers, 50U);
+}
+
+TEST_F(ScalarTest, StoresAsItsEntryForEveryEntry) {
+  // Negative, wide and single-bit values, into every entry, by the inline path and by the
+  // out-of-line one (that of a build for size): the blocks stay equal.
+  for (uint64_t value : {0xFFFFFFFFFFFFFF85ULL, 0x0123456789ABCDEFULL, 1ULL}) {
+    for (const bool outOfLine : {false, true}) {
+      for (const EntryRef& ref : Entries(gen::example::kDefinition)) {
+        byRef_.storeUnsigned(ref, value ^ (outOfLine ? 0x10U : 0U));
+        const Scalar scalar = byScalar_.scalar(ref);
+        if (outOfLine) {
+          byScalar_.storeScalar(scalar, value ^ 0x10U);
+        } else {
+          byScalar_.storeUnsigned(scalar, value);
+        }
+        ASSERT_EQ(std::memcmp(&refValues_, &scalarValues_, sizeof(refValues_)), 0)
+            << std::hex << ref.index() << ":" << unsigned{ref.subIndex()} << " " << outOfLine;
+        EXPECT_EQ(byScalar_.readUnsigned(scalar), byRef_.readUnsigned(ref));
+      }
+    }
+  }
+}
+
+TEST_F(ScalarTest, SignedValuesAreSignExtendedAndConstantsStayConstant) {
+  // 0x1200:01 is the `$NODEID` constant 0x600 + node-id: ROM, read with the node-id.
+  const Scalar constant = byRef_.scalar(byRef_.find(0x1200, 1));
+  EXPECT_EQ(byRef_.readUnsigned(constant), 0x605U);
+  byRef_.storeUnsigned(constant, 0x123);
+  EXPECT_EQ(byRef_.readUnsigned(constant), 0x605U);
+  for (const EntryRef& ref : Entries(gen::example::kDefinition)) {
+    if (isSigned(ref.type()) && byRef_.ramAddress(ref) != nullptr) {
+      const Scalar scalar = byRef_.scalar(ref);
+      byRef_.storeUnsigned(scalar, static_cast<uint64_t>(-2));
+      EXPECT_EQ(static_cast<int64_t>(byRef_.readUnsigned(scalar)), -2)
+          << std::hex << ref.index() << ":" << unsigned{ref.subIndex()};
+    }
+  }
+}
+
+TEST_F(ScalarTest, AnAbsentEntryIsNotValidStoresNothingAndAStringReadsAsZero) {
+  const Scalar absent = byScalar_.scalar(byScalar_.find(0x1017, 7));
+  EXPECT_FALSE(absent.valid());
+  EXPECT_FALSE(byRef_.scalar(byRef_.find(0x5FFF, 0)).valid());
+  byScalar_.storeUnsigned(absent, 0xA5A5A5A5A5A5A5A5ULL);
+  byScalar_.storeScalar(absent, 0xA5A5A5A5A5A5A5A5ULL);
+  EXPECT_EQ(std::memcmp(&refValues_, &scalarValues_, sizeof(refValues_)), 0);
+  const Scalar name = byRef_.scalar(byRef_.find(0x1008, 0));
+  ASSERT_TRUE(name.valid());
+  EXPECT_EQ(byRef_.readUnsigned(name), 0U);
+}
+
+}  // namespace
+}  // namespace costa::od

@@ -1,0 +1,151 @@
+// Defaults: the RAM values an object dictionary starts from, restored by index range or by
+// storage group, and one entry's default for the parameter store.
+#include "costa/od/object_dictionary.hpp"
+
+#include "costa/od/bytes.hpp"
+#include "costa/od/little_endian.hpp"
+
+namespace costa::od {
+namespace {
+
+// Bytes a value of `row` takes in its block: a VISIBLE_STRING keeps a terminating zero.
+size_t storageBytes(const SubEntry& row) noexcept {
+  return row.type == DataType::kVisibleString ? row.size + 1U : row.size;
+}
+
+// The first default at or after `offset` (binary search: the defaults are sorted by offset).
+const DefaultValue* firstDefaultFrom(const Definition& definition, size_t offset) noexcept {
+  const DefaultValue* low = definition.defaults;
+  size_t count = definition.defaultCount;
+  while (count > 0U) {
+    const size_t half = count / 2U;
+    if (low[half].offset < offset) {
+      low += half + 1U;
+      count -= half + 1U;
+    } else {
+      count = half;
+    }
+  }
+  return low;
+}
+
+// Writes one default at `target`.
+void writeDefault(const Definition& definition, const DefaultValue& value,
+                  uint8_t* target) noexcept {
+  const size_t bytes = value.bytes();
+  if (value.numeric()) {
+    const uint64_t raw = bytes <= 4U
+                             ? value.value
+                             : loadLittleEndianBytes(definition.defaultBytes + value.value, bytes);
+    storeNative(target, raw, bytes);
+  } else {
+    copyBytes(target, definition.defaultBytes + value.value, bytes);
+  }
+}
+
+}  // namespace
+
+void copyDefault(const Definition& definition, const EntryRef& ref, uint8_t* destination) noexcept {
+  const size_t bytes = storageBytes(*ref.row);
+  fillBytes(destination, 0, bytes);
+  const DefaultValue* value = firstDefaultFrom(definition, ref.offset());
+  if (value < definition.defaults + definition.defaultCount && value->offset == ref.offset()) {
+    writeDefault(definition, *value, destination);
+  }
+}
+
+void ObjectDictionary::restoreRow(const SubEntry& row) noexcept {
+  if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
+    return;
+  }
+  const size_t bytes = storageBytes(row);
+  const size_t end = row.offset + row.count * bytes;
+  fillBytes(values_ + row.offset, 0, end - row.offset);
+  const Definition& definition = *definition_;
+  const DefaultValue* last = definition.defaults + definition.defaultCount;
+  for (const DefaultValue* value = firstDefaultFrom(definition, row.offset);
+       value < last && value->offset < end; ++value) {
+    writeDefault(definition, *value, values_ + value->offset);
+  }
+  if ((row.attributes & kNodeIdRelative) != 0U) {
+    addNodeId(row);
+  }
+}
+
+void ObjectDictionary::addNodeId(const SubEntry& row) noexcept {
+  const size_t end = row.offset + row.count * storageBytes(row);
+  for (size_t offset = row.offset; offset < end; offset += storageBytes(row)) {
+    storeNative(values_ + offset, loadNative(values_ + offset, row.size) + nodeId_, row.size);
+  }
+}
+
+template <typename Wanted>
+void ObjectDictionary::restoreRows(const Object& object, Wanted wanted) noexcept {
+  for (uint8_t i = 0; i < object.rowCount; ++i) {
+    if (wanted(object.rows[i])) {
+      restoreRow(object.rows[i]);
+    }
+  }
+}
+
+namespace {
+// Calls visit(row) for every row of the objects whose index lies in [first, last].
+template <typename Visit>
+void forEachRowIn(const Definition& definition, uint16_t first, uint16_t last, Visit visit) {
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    const Object& object = definition.objects[i];
+    if (object.index > last) {
+      break;  // objects are in the order of their indices
+    }
+    if (object.index < first) {
+      continue;
+    }
+    for (uint8_t r = 0; r < object.rowCount; ++r) {
+      visit(object.rows[r]);
+    }
+  }
+}
+}  // namespace
+
+void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
+  // The RAM values of [first, last] are one range of the block (ramInIndexOrder): zero it,
+  // then write the non-zero defaults that fall in it, then add the node-id where it belongs.
+  const Definition& definition = *definition_;
+  size_t begin = SIZE_MAX;
+  size_t end = 0;
+  if (first == 0U && last == UINT16_MAX) {
+    begin = 0;
+    end = definition.valuesSize;
+  } else {
+    forEachRowIn(definition, first, last, [&begin, &end](const SubEntry& row) {
+      if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
+        return;
+      }
+      begin = begin == SIZE_MAX ? row.offset : begin;
+      end = row.offset + row.count * storageBytes(row);
+    });
+  }
+  if (begin == SIZE_MAX) {
+    return;
+  }
+  fillBytes(values_ + begin, 0, end - begin);
+  const DefaultValue* stop = definition.defaults + definition.defaultCount;
+  for (const DefaultValue* value = firstDefaultFrom(definition, begin);
+       value < stop && value->offset < end; ++value) {
+    writeDefault(definition, *value, values_ + value->offset);
+  }
+  forEachRowIn(definition, first, last, [this](const SubEntry& row) {
+    if ((row.attributes & (kNodeIdRelative | kInRom)) == kNodeIdRelative) {
+      addNodeId(row);
+    }
+  });
+}
+
+void ObjectDictionary::restoreGroupDefaults(uint8_t group) noexcept {
+  for (size_t i = 0; i < definition_->objectCount; ++i) {
+    restoreRows(definition_->objects[i],
+                [group](const SubEntry& row) { return row.group == group; });
+  }
+}
+
+}  // namespace costa::od
