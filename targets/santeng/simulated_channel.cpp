@@ -48,12 +48,49 @@ void SimulatedChannel::run(const ChannelCommand& command, Microseconds elapsed) 
       change_ = 0;  // nothing changes any more in this step: no acceleration either
       break;
     }
+    if (left >= 2000U && cruising(command)) {
+      cruise(command, left / 1000U);
+      changed = true;
+      break;
+    }
     stepMillisecond(command);
     changed = true;
   }
   if (changed) {
     measure();
   }
+}
+
+bool SimulatedChannel::cruising(const ChannelCommand& command) const noexcept {
+  // A step would change neither the ramp nor the speed, and there is no acceleration left to
+  // show. A count position move may arrive on its count in a step: it takes its steps.
+  return command.powered && speedMode(command.mode) && change_ == 0 && maxRpm_ == command.maxRpm &&
+         mode_ == command.mode && ramped_ == targetSpeed(command) &&
+         actual_ == (stalled_ ? 0 : ramped_);
+}
+
+void SimulatedChannel::cruise(const ChannelCommand& command, uint32_t steps) noexcept {
+  // Each step adds the same amount to a remainder that starts within one count's units, so the
+  // partial sums move one way and cross zero at most once: the counts that the steps would
+  // truncate one by one are those of the whole sum, truncated once. At most 1000 steps at once
+  // keep the sums far from overflowing (|v| < 2^30 units, 4 x lines < 2^18).
+  constexpr uint32_t kChunk = 1000;
+  while (steps > 0U) {
+    const uint32_t n = steps < kChunk ? steps : kChunk;
+    count_ += travel(int64_t{n} * actual_, command.encoderLines);
+    steps -= n;
+  }
+}
+
+int64_t SimulatedChannel::travel(int64_t unitMilliseconds, uint16_t encoderLines) noexcept {
+  countRemainder_ += unitMilliseconds * 4 * encoderLines;
+  const int64_t counts = countRemainder_ / kUnitMillisecondsPerRevolution;
+  countRemainder_ -= counts * kUnitMillisecondsPerRevolution;
+  hallRemainder_ += unitMilliseconds * kHallCountsPerRevolution;
+  const int64_t hallCounts = hallRemainder_ / kUnitMillisecondsPerRevolution;
+  hallRemainder_ -= hallCounts * kUnitMillisecondsPerRevolution;
+  hallCount_ += hallCounts;
+  return counts;
 }
 
 int64_t SimulatedChannel::positionTarget(const ChannelCommand& command) const noexcept {
@@ -107,13 +144,7 @@ void SimulatedChannel::stepMillisecond(const ChannelCommand& command) noexcept {
 }
 
 void SimulatedChannel::move(const ChannelCommand& command) noexcept {
-  countRemainder_ += actual_ * 4 * command.encoderLines;
-  const int64_t counts = countRemainder_ / kUnitMillisecondsPerRevolution;
-  countRemainder_ -= counts * kUnitMillisecondsPerRevolution;
-  hallRemainder_ += actual_ * kHallCountsPerRevolution;
-  const int64_t hallCounts = hallRemainder_ / kUnitMillisecondsPerRevolution;
-  hallRemainder_ -= hallCounts * kUnitMillisecondsPerRevolution;
-  hallCount_ += hallCounts;
+  const int64_t counts = travel(actual_, command.encoderLines);
   const int64_t remaining = int64_t{command.targetCount} - count_;
   const bool positioning = !speedMode(command.mode) && command.powered && !command.stopping;
   if (positioning && remaining != 0 && sign(counts) == sign(remaining) &&

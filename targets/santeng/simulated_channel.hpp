@@ -31,7 +31,7 @@ class SimulatedChannel {
   static constexpr int64_t kHallCountsPerRevolution = 24;
 
   /// `elapsed` (whole milliseconds) under `command`, in steps of 1 ms; the time left once the
-  /// channel is at rest passes without steps.
+  /// channel is at rest passes without steps, and once it runs at a steady speed, in one.
   void run(const ChannelCommand& command, Microseconds elapsed) noexcept;
   /// Nothing would change in a step under `command`.
   bool atRest(const ChannelCommand& command) const noexcept;
@@ -55,8 +55,15 @@ class SimulatedChannel {
   int64_t positionTarget(const ChannelCommand& command) const noexcept;
   /// One millisecond under `command`.
   void stepMillisecond(const ChannelCommand& command) noexcept;
+  /// A step under `command` would only count on at a steady speed (see cruise()).
+  bool cruising(const ChannelCommand& command) const noexcept;
+  /// `steps` milliseconds of stepMillisecond() while cruising(): the counts in one sum.
+  void cruise(const ChannelCommand& command, uint32_t steps) noexcept;
   /// Counts of this millisecond; in count position mode, arrival on the target.
   void move(const ChannelCommand& command) noexcept;
+  /// Adds a travel of `unitMilliseconds` (speed x time) to the remainders and the hall count;
+  /// returns the encoder counts it makes at `encoderLines`.
+  int64_t travel(int64_t unitMilliseconds, uint16_t encoderLines) noexcept;
   /// reading_ from the state.
   void measure() noexcept;
 
