@@ -19,15 +19,17 @@ namespace {
     rowAt = static_cast<size_t>(ref->row - ref->object->rows);
     step = static_cast<unsigned>(ref->sub - ref->row->subIndex) + 1U;
   }
-  for (; objectAt < definition.objectCount; ++objectAt, rowAt = 0) {
+  for (; objectAt < definition.objectCount; ++objectAt) {
     const od::Object& object = definition.objects[objectAt];
-    for (; rowAt < object.rowCount; ++rowAt, step = 0) {
+    for (; rowAt < object.rowCount; ++rowAt) {
       const od::SubEntry& row = object.rows[rowAt];
       if (row.group == group && (row.attributes & attributes) == attributes && step < row.count) {
         *ref = od::EntryRef{&object, &row, static_cast<uint8_t>(row.subIndex + step)};
         return true;
       }
+      step = 0;  // the next row from its first sub-index
     }
+    rowAt = 0;
   }
   *ref = od::EntryRef{};
   return false;
