@@ -19,9 +19,9 @@ Scalar ObjectDictionary::scalar(const EntryRef& ref) const noexcept {
   }
   if (ref.inRom()) {
     scalar.flags_ |= Scalar::kInRom;
-  }
-  if (ref.inRom() && ref.has(kNodeIdRelative)) {  // a constant without the node-id
-    scalar.flags_ |= Scalar::kAddsNodeId;
+    if (ref.has(kNodeIdRelative)) {  // a constant without the node-id
+      scalar.flags_ |= Scalar::kAddsNodeId;
+    }
   }
   return scalar;
 }

@@ -48,6 +48,8 @@ void SimulatedChannel::run(const ChannelCommand& command, Microseconds elapsed) 
       change_ = 0;  // nothing changes any more in this step: no acceleration either
       break;
     }
+    // One millisecond left is one step either way; a run of one millisecond always steps, which
+    // is what santeng_channel_test.cpp compares a cruise with.
     if (left >= 2000U && cruising(command)) {
       cruise(command, left / 1000U);
       changed = true;
