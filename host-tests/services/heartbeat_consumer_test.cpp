@@ -12,7 +12,7 @@ using Kind = HeartbeatConsumer::EventKind;
 
 class HeartbeatConsumerTest : public ServiceTest {
  protected:
-  HeartbeatConsumerTest() : consumer_(dictionary_, monitors_, 2) {}
+  HeartbeatConsumerTest() : consumer_(dictionary_, clock_, monitors_, 2) {}
 
   /// Entry `sub` of 0x1016: node `nodeId` every `ms`.
   static uint32_t entryValue(uint8_t nodeId, uint16_t ms) {
@@ -55,6 +55,32 @@ TEST_F(HeartbeatConsumerTest, ATimeoutIsReportedOnceThenTheReturn) {
   EXPECT_EQ(back.nodeId, 0x20U);
   EXPECT_EQ(back.entry, 2U);
   EXPECT_EQ(consumer_.nextDeadline(), afterMs(700));
+}
+
+// A timed-out entry that gets a new value is withdrawn: one event, due at once; the new value
+// is monitored from its first heartbeat. An entry that did not time out, or a value written
+// again, withdraws nothing.
+TEST_F(HeartbeatConsumerTest, ANewValueWithdrawsATimedOutEntryOnce) {
+  monitor(1, 0x20, 100);
+  monitor(2, 0x21, 100);
+  EXPECT_EQ(consumer_.onHeartbeat(0x20, 0x05, kStart).kind, Kind::kNone);
+  EXPECT_EQ(consumer_.process(afterMs(100)).kind, Kind::kTimeout);
+  store(0x1016, 2, entryValue(0x22, 100));  // never timed out
+  consumer_.configure(false);
+  store(0x1016, 1, entryValue(0x20, 100));  // unchanged
+  consumer_.configure(false);
+  EXPECT_EQ(consumer_.process(afterMs(150)).kind, Kind::kNone);
+  store(0x1016, 1, entryValue(0x20, 200));  // timed out, then a new time
+  consumer_.configure(false);
+  store(0x1016, 1, entryValue(0x23, 200));  // changed again before process(): still one event
+  consumer_.configure(false);
+  const HeartbeatConsumer::Event withdrawn = consumer_.process(afterMs(200));
+  EXPECT_EQ(withdrawn.kind, Kind::kWithdrawn);
+  EXPECT_EQ(withdrawn.entry, 1U);
+  EXPECT_EQ(consumer_.process(afterMs(200)).kind, Kind::kNone);
+  EXPECT_FALSE(consumer_.monitor(1)->active);
+  EXPECT_EQ(consumer_.onHeartbeat(0x23, 0x05, afterMs(300)).kind, Kind::kNone);  // not resumed
+  EXPECT_EQ(consumer_.process(afterMs(500)).kind, Kind::kTimeout);
 }
 
 TEST_F(HeartbeatConsumerTest, EachHeartbeatRestartsTheWait) {
@@ -134,7 +160,8 @@ TEST_F(HeartbeatConsumerTest, OnlyConfiguredSubIndicesHaveAMonitor) {
   EXPECT_NE(consumer_.monitor(2), nullptr);
   EXPECT_EQ(consumer_.monitor(3), nullptr);
   HeartbeatMonitor one[1];
-  HeartbeatConsumer small(dictionary_, one, 1);  // fewer monitors than entries: the first ones
+  HeartbeatConsumer small(dictionary_, clock_, one,
+                          1);  // fewer monitors than entries: the first ones
   small.configure(true);
   EXPECT_NE(small.monitor(1), nullptr);
   EXPECT_EQ(small.monitor(2), nullptr);

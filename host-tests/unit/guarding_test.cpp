@@ -6,6 +6,14 @@ namespace {
 
 using Guarding = ExampleNodeTest;
 
+/// Guard time 100 ms, life time factor 3: a life time of 300 ms.
+constexpr const char* kLifeTime300Ms = R"(
+    rx 601 [8] 2B 0C 10 00 64 00 00 00   # guard time 100 ms
+    tx 581 [8] 60 0C 10 00 00 00 00 00
+    rx 601 [8] 2F 0D 10 00 03 00 00 00   # life time factor 3: life time 300 ms
+    tx 581 [8] 60 0D 10 00 00 00 00 00
+)";
+
 TEST_F(Guarding, RepliesWithStateAndAlternatingToggleStartingAtZero) {
   EXPECT_TRANSCRIPT(R"(
     rx 701 [0] RTR
@@ -40,11 +48,8 @@ class RecordingGuardEvents : public NodeEvents {
 TEST_F(Guarding, LifeTimeExpiryRaisesEmcy8130AndEntersPreOperational) {
   RecordingGuardEvents events;
   ASSERT_TRUE(bus_.node().addListener(events));
+  EXPECT_TRANSCRIPT(kLifeTime300Ms);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 2B 0C 10 00 64 00 00 00   # guard time 100 ms
-    tx 581 [8] 60 0C 10 00 00 00 00 00
-    rx 601 [8] 2F 0D 10 00 03 00 00 00   # life time factor 3: life time 300 ms
-    tx 581 [8] 60 0D 10 00 00 00 00 00
     rx 000 [2] 01 01
     wait 1000
     silence                              # life guarding starts with the first request
@@ -68,11 +73,8 @@ TEST_F(Guarding, LifeTimeExpiryRaisesEmcy8130AndEntersPreOperational) {
 }
 
 TEST_F(Guarding, ResetCommunicationClearsALifeGuardingError) {
+  EXPECT_TRANSCRIPT(kLifeTime300Ms);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 2B 0C 10 00 64 00 00 00   # guard time 100 ms
-    tx 581 [8] 60 0C 10 00 00 00 00 00
-    rx 601 [8] 2F 0D 10 00 03 00 00 00   # life time factor 3: life time 300 ms
-    tx 581 [8] 60 0D 10 00 00 00 00 00
     rx 701 [0] RTR
     tx 701 [1] 7F
     wait 300
@@ -106,6 +108,39 @@ TEST_F(Guarding, NoGuardingWhileTheHeartbeatProducerRuns) {
     rx 701 [0] RTR
     tx 701 [1] 7F
   )");
+}
+
+// Guarding that ran before the heartbeat producer started stops with it: the requests are no
+// longer answered, so the life time would otherwise expire under a master that moved to
+// heartbeats (docs/manual-errata.md).
+TEST_F(Guarding, LifeGuardingThatRanStopsWhenTheHeartbeatStarts) {
+  RecordingGuardEvents events;
+  ASSERT_TRUE(bus_.node().addListener(events));
+  EXPECT_TRANSCRIPT(kLifeTime300Ms);
+  EXPECT_TRANSCRIPT(R"(
+    rx 701 [0] RTR
+    tx 701 [1] 7F                        # life guarding runs
+    rx 601 [8] 2B 17 10 00 C8 00 00 00   # heartbeat every 200 ms
+    tx 581 [8] 60 17 10 00 00 00 00 00
+    wait 200
+    tx 701 [1] 7F
+    wait 200
+    tx 701 [1] 7F                        # 400 ms after the request: no EMCY 0x8130
+    wait 200
+    tx 701 [1] 7F
+    rx 601 [8] 2B 17 10 00 00 00 00 00   # heartbeat off: guarding again, from the next request
+    tx 581 [8] 60 17 10 00 00 00 00 00
+    wait 1000
+    silence
+    rx 701 [0] RTR
+    tx 701 [1] FF                        # the toggle goes on from the last reply
+    wait 299
+    silence
+    wait 1
+    tx 081 [8] 30 81 11 00 00 00 00 00   # and its life time counts again
+  )");
+  EXPECT_EQ(events.expired, 1);
+  EXPECT_EQ(events.resumed, 0);
 }
 
 TEST_F(Guarding, ErrorBehaviourNoChangeOrStopped) {

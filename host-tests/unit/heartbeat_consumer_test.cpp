@@ -8,6 +8,12 @@ namespace {
 
 using HeartbeatConsumerTest = ExampleNodeTest;
 
+/// 0x1016:01 = node 5 every 100 ms.
+constexpr const char* kNode5Every100Ms = R"(
+    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5, 100 ms
+    tx 581 [8] 60 16 10 01 00 00 00 00
+)";
+
 class RecordingHeartbeatEvents : public NodeEvents {
  public:
   void onHeartbeatTimeout(uint8_t nodeId) noexcept override { lastTimeout = nodeId; }
@@ -19,9 +25,8 @@ class RecordingHeartbeatEvents : public NodeEvents {
 TEST_F(HeartbeatConsumerTest, TimeoutAfterTheFirstHeartbeatAndReturn) {
   RecordingHeartbeatEvents events;
   ASSERT_TRUE(bus_.node().addListener(events));
+  EXPECT_TRANSCRIPT(kNode5Every100Ms);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5, 100 ms
-    tx 581 [8] 60 16 10 01 00 00 00 00
     rx 000 [2] 01 01
     wait 1000
     silence                              # not monitored before its first heartbeat
@@ -47,9 +52,8 @@ TEST_F(HeartbeatConsumerTest, TimeoutAfterTheFirstHeartbeatAndReturn) {
 // Reset communication starts monitoring over (0x1016 back to its default): the error it found
 // is gone with it.
 TEST_F(HeartbeatConsumerTest, ResetCommunicationClearsATimeoutsError) {
+  EXPECT_TRANSCRIPT(kNode5Every100Ms);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5, 100 ms
-    tx 581 [8] 60 16 10 01 00 00 00 00
     rx 705 [1] 05
     wait 100
     tx 081 [8] 30 81 11 05 00 00 00 00
@@ -59,6 +63,34 @@ TEST_F(HeartbeatConsumerTest, ResetCommunicationClearsATimeoutsError) {
     rx 601 [8] 40 01 10 00 00 00 00 00
     tx 581 [8] 4F 01 10 00 00 00 00 00
   )");
+}
+
+// A new value of an entry that had timed out starts its monitoring over, as reset
+// communication does: the error it had found is cleared (after the SDO answer), and a timeout
+// under the new value is reported again.
+TEST_F(HeartbeatConsumerTest, ANewEntryClearsTheErrorItsOldValueFound) {
+  RecordingHeartbeatEvents events;
+  ASSERT_TRUE(bus_.node().addListener(events));
+  EXPECT_TRANSCRIPT(kNode5Every100Ms);
+  EXPECT_TRANSCRIPT(R"(
+    rx 705 [1] 05
+    wait 100
+    tx 081 [8] 30 81 11 05 00 00 00 00
+    rx 601 [8] 23 16 10 01 00 00 00 00   # the entry off
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # no error left
+    rx 601 [8] 23 16 10 01 C8 00 06 00   # node 6, 200 ms
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 706 [1] 05
+    wait 200
+    tx 081 [8] 30 81 11 06 00 00 00 00   # its own timeout: a new EMCY
+    rx 601 [8] 23 16 10 01 C8 00 06 00   # the same value again: nothing starts over
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    wait 1000
+    silence
+  )");
+  EXPECT_EQ(events.lastTimeout, 6U);
+  EXPECT_EQ(events.lastResumed, 0U);  // no heartbeat came back
 }
 
 TEST_F(HeartbeatConsumerTest, EntriesWithNodeIdZeroOrTimeZeroAreDisabled) {
@@ -88,9 +120,8 @@ TEST_F(HeartbeatConsumerTest, TwoEntriesForOneNodeAbort_06040043) {
 }
 
 TEST_F(HeartbeatConsumerTest, SeveralProducersAreMonitoredIndependently) {
+  EXPECT_TRANSCRIPT(kNode5Every100Ms);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5, 100 ms
-    tx 581 [8] 60 16 10 01 00 00 00 00
     rx 601 [8] 23 16 10 02 C8 00 06 00   # node 6, 200 ms
     tx 581 [8] 60 16 10 02 00 00 00 00
     rx 601 [8] 2F 29 10 01 01 00 00 00   # no state change on errors

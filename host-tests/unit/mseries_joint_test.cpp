@@ -325,3 +325,45 @@ TEST_F(ThreeJoints, OneSyncMovesAllThree) {
 
 }  // namespace
 }  // namespace costa::test
+
+namespace costa::test {
+namespace {
+
+// The simulated motor keeps its reading: each change of its state is in the next read(), and a
+// new motor reads at rest (0x6078's idle 100 counts).
+TEST(SimulatedJointReading, EveryChangeIsInTheNextRead) {
+  mseries::SimulatedJoint joint;
+  mseries::JointFeedback r = joint.read();
+  EXPECT_EQ(r.position, 0);
+  EXPECT_EQ(r.velocity, 0);
+  EXPECT_TRUE(r.atRest);
+  EXPECT_EQ(r.current, 100U);
+  EXPECT_EQ(r.pwm, 0);
+  joint.setPosition(-5000);
+  EXPECT_EQ(joint.read().position, -5000);
+  mseries::JointCommand command;
+  command.axis.motion = cia402::Motion::kVelocity;
+  command.axis.velocity = 1500;  // no ramp: at speed with the first step
+  joint.drive(command);
+  EXPECT_FALSE(joint.read().atRest);  // about to move
+  joint.step(mseries::SimulatedJoint::kStep);
+  r = joint.read();
+  EXPECT_EQ(r.velocity, 1500);
+  EXPECT_EQ(r.position, -5000 + 819);  // 1500 r/min = 819.2 counts a millisecond
+  EXPECT_EQ(r.current, 1600U);
+  EXPECT_EQ(r.pwm, 16383);
+  joint.step(mseries::SimulatedJoint::kStep / 2);  // no whole step: nothing moves
+  EXPECT_EQ(joint.read().position, -5000 + 819);
+  joint.setInputs(true, false);
+  EXPECT_TRUE(joint.read().dir);
+  EXPECT_FALSE(joint.read().pu);
+  command.axis.motion = cia402::Motion::kFree;
+  joint.drive(command);
+  r = joint.read();
+  EXPECT_EQ(r.velocity, 0);
+  EXPECT_TRUE(r.atRest);
+  EXPECT_EQ(r.current, 100U);
+}
+
+}  // namespace
+}  // namespace costa::test

@@ -17,7 +17,7 @@ ErrorControl::ErrorControl(od::ObjectDictionary& dictionary, const ErrorControlP
       listeners_(listeners),
       nmt_(nmt),
       guarding_(dictionary, tx, clock),
-      consumer_(dictionary, monitors, monitorCapacity) {}
+      consumer_(dictionary, clock, monitors, monitorCapacity) {}
 
 void ErrorControl::reset(uint8_t nodeId) noexcept {
   // Monitoring starts over: the errors it had found are gone with it (EMCY 0x8130 cleared).
@@ -26,7 +26,7 @@ void ErrorControl::reset(uint8_t nodeId) noexcept {
       emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
     }
     for (uint8_t entry = 1; consumer_.monitor(entry) != nullptr; ++entry) {
-      if (consumer_.monitor(entry)->timedOut) {
+      if (consumer_.monitor(entry)->timedOut || consumer_.monitor(entry)->withdrawn) {
         emcy_.clear(kEmcyLifeGuardOrHeartbeat, entry);
       }
     }
@@ -89,6 +89,12 @@ void ErrorControl::onHeartbeatEvent(const HeartbeatConsumer::Event& event) noexc
     listeners_.notify(
         [&event](NodeEvents& listener) { listener.onHeartbeatTimeout(event.nodeId); });
     onCommunicationError();
+  } else if (event.kind == HeartbeatConsumer::EventKind::kWithdrawn) {
+    // Its new value starts monitoring over, as reset communication does (reset()). The device
+    // hears of it no more than of a reset: no producer resumed.
+    if (profile_.emcyForErrors) {
+      emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
+    }
   } else if (event.kind == HeartbeatConsumer::EventKind::kResumed) {
     if (profile_.emcyForErrors) {
       emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);

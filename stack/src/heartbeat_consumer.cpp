@@ -21,9 +21,11 @@ void HeartbeatConsumer::configure(bool reset) noexcept {
     const Microseconds time = millisecondsToMicroseconds(value & 0xFFFFU);
     HeartbeatMonitor& monitor = monitors_[count_++];
     if (monitor.nodeId != nodeId || monitor.time != time) {
+      const bool withdrawn = monitor.timedOut || monitor.withdrawn;
       monitor = HeartbeatMonitor{};  // a changed entry starts over: first heartbeat, then timing
       monitor.nodeId = nodeId;
       monitor.time = time;
+      monitor.withdrawn = withdrawn;
     }
   }
 }
@@ -56,6 +58,10 @@ HeartbeatConsumer::Event HeartbeatConsumer::onHeartbeat(uint8_t nodeId, uint8_t 
 HeartbeatConsumer::Event HeartbeatConsumer::process(Microseconds now) noexcept {
   for (size_t i = 0; i < count_; ++i) {
     HeartbeatMonitor& monitor = monitors_[i];
+    if (monitor.withdrawn) {
+      monitor.withdrawn = false;
+      return Event{EventKind::kWithdrawn, monitor.nodeId, static_cast<uint8_t>(i + 1U)};
+    }
     if (monitor.active && !monitor.timedOut && reached(now, monitor.deadline)) {
       monitor.timedOut = true;
       return Event{EventKind::kTimeout, monitor.nodeId, static_cast<uint8_t>(i + 1U)};
@@ -98,6 +104,7 @@ AbortCode HeartbeatConsumer::write(od::ObjectDictionary& dictionary, const od::E
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
     configure(false);
+    clock_.schedule(clock_.now);  // process() reports a withdrawn entry at once
   }
   return written;
 }

@@ -48,6 +48,14 @@ NodeGuarding::Event NodeGuarding::process(Microseconds now) noexcept {
   if (!guarded_ || expired_ || !life_.fired(now)) {
     return Event::kNone;
   }
+  if (dictionary_.readUnsigned(kHeartbeatProducerIndex, 0, 0) != 0U) {
+    // The heartbeat producer started while guarding ran: requests are no longer answered
+    // (CiA 301 7.2.8.3.2), so the life time ran out for want of them. Life guarding stops
+    // until the next answered request.
+    guarded_ = false;
+    life_.stop();
+    return Event::kNone;
+  }
   expired_ = true;
   return Event::kLifeTimeExpired;
 }

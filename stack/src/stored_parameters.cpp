@@ -44,6 +44,9 @@ void StoredParameters::loadLssConfiguration(bool powerOn, uint8_t* nodeId,
                                             LssBitTiming* timing) noexcept {
   *nodeId = settings_.nodeId;
   *timing = settings_.bitTiming;
+  if constexpr (!features::kParameterStorage) {
+    return;
+  }
   if (!ready_) {
     return;
   }
@@ -62,6 +65,9 @@ void StoredParameters::loadLssConfiguration(bool powerOn, uint8_t* nodeId,
 }
 
 void StoredParameters::loadGroups(uint32_t groups) noexcept {
+  if constexpr (!features::kParameterStorage) {
+    return;
+  }
   if (!ready_) {
     return;
   }
@@ -77,6 +83,9 @@ void StoredParameters::loadGroups(uint32_t groups) noexcept {
 }
 
 void StoredParameters::reportInvalid() noexcept {
+  if constexpr (!features::kParameterStorage) {
+    return;  // nothing is ever loaded, so nothing is found damaged
+  }
   for (size_t i = 0; i < invalidCount_; ++i) {
     const Invalid invalid = invalid_[i];
     listeners_.notify([&invalid](NodeEvents& listener) {
@@ -106,6 +115,9 @@ WriteObserver* StoredParameters::autoSave() noexcept {
 }
 
 AbortCode StoredParameters::onWritten(const od::EntryRef& ref, bool changed) noexcept {
+  if constexpr (!features::kParameterStorage) {
+    return AbortCode::kNone;  // (never called: autoSave() is null)
+  }
   if (!changed || ref.group() == od::kGroupNone || !ready_) {
     return AbortCode::kNone;
   }
@@ -113,6 +125,9 @@ AbortCode StoredParameters::onWritten(const od::EntryRef& ref, bool changed) noe
 }
 
 bool StoredParameters::onRestoreAll() noexcept {
+  if constexpr (!features::kParameterStorage) {
+    return true;  // (never called: there are no store commands)
+  }
   if (!settings_.restoreAllIncludesLss || !ready_) {
     return true;
   }

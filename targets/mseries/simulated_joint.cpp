@@ -82,18 +82,24 @@ void SimulatedJoint::drive(const JointCommand& command) noexcept {
       (command.axis.motion == Motion::kStop && rampOf(command.axis.deceleration) == 0)) {
     velocity_ = 0;  // no torque, or an abrupt stop: at rest at once
   }
+  measure();
 }
 
 void SimulatedJoint::setPosition(int32_t position) noexcept {
   position_ = fixed(position);
+  measure();
 }
 
 void SimulatedJoint::step(Microseconds elapsed) noexcept {
   elapsed_ += elapsed;
-  while (elapsed_ >= kStep) {
+  if (elapsed_ < kStep) {
+    return;
+  }
+  do {
     elapsed_ -= kStep;
     stepOnce();
-  }
+  } while (elapsed_ >= kStep);
+  measure();
 }
 
 void SimulatedJoint::stepOnce() noexcept {
@@ -188,6 +194,7 @@ void SimulatedJoint::setInputs(bool dir, bool pu) noexcept {
   if (command_.axis.motion == Motion::kHoming && homing_ == HomingState::kRunning) {
     homeIfActive();
   }
+  measure();
 }
 
 bool SimulatedJoint::homeIfActive() noexcept {
@@ -239,8 +246,8 @@ bool SimulatedJoint::moving() const noexcept {
   }
 }
 
-JointFeedback SimulatedJoint::read() const noexcept {
-  JointFeedback feedback;
+void SimulatedJoint::measure() noexcept {
+  JointFeedback& feedback = reading_;
   feedback.position =
       static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(position_ >> kFraction)));
   feedback.velocity = toRpm(velocity_);
@@ -251,7 +258,6 @@ JointFeedback SimulatedJoint::read() const noexcept {
   feedback.pwm = static_cast<int16_t>(int64_t{feedback.velocity} * 32767 / 3000);
   feedback.dir = dir_;
   feedback.pu = pu_;
-  return feedback;
 }
 
 }  // namespace costa::mseries

@@ -23,9 +23,13 @@ class SimulatedJoint final : public JointBackend {
   /// Accelerations from this on (and 0) have no internal ramp (lines 195-203).
   static constexpr uint32_t kNoRampFrom = 60000;
 
+  SimulatedJoint() noexcept { measure(); }
+
   void drive(const JointCommand& command) noexcept override;
   void step(Microseconds elapsed) noexcept override;
-  JointFeedback read() const noexcept override;
+  /// What the last change left (kept, not computed at each read: the joint reads its motor for
+  /// the drive and again to publish, at every step).
+  JointFeedback read() const noexcept override { return reading_; }
   void setPosition(int32_t position) noexcept override;
 
   /// The DIR and PU inputs (simulation commands). Homing ends at once when the input it waits
@@ -34,6 +38,8 @@ class SimulatedJoint final : public JointBackend {
   bool moving() const noexcept override;
 
  private:
+  /// Computes reading_ from the state: after every change of it.
+  void measure() noexcept;
   void stepOnce() noexcept;
   void stepPosition(int64_t target, int64_t limit) noexcept;
   void stepVelocity(int64_t target) noexcept;
@@ -52,6 +58,7 @@ class SimulatedJoint final : public JointBackend {
   cia402::HomingState homing_ = cia402::HomingState::kIdle;
   bool dir_ = false;
   bool pu_ = false;
+  JointFeedback reading_;
 };
 
 }  // namespace costa::mseries

@@ -111,9 +111,10 @@ class AbsentNodeGuarding final : public AbsentService {
 /// Heartbeat consumer compiled out: other nodes' heartbeats are not monitored; no 0x1016.
 class AbsentHeartbeatConsumer final : public AbsentService {
  public:
-  AbsentHeartbeatConsumer(od::ObjectDictionary& dictionary, HeartbeatMonitor* monitors,
-                          size_t capacity) noexcept {
+  AbsentHeartbeatConsumer(od::ObjectDictionary& dictionary, NodeClock& clock,
+                          HeartbeatMonitor* monitors, size_t capacity) noexcept {
     (void)dictionary;
+    (void)clock;
     (void)monitors;
     (void)capacity;
   }

@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "costa/nmt_state.hpp"
+#include "costa/node_clock.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/port/can_frame.hpp"
 #include "costa/time.hpp"
@@ -17,6 +18,8 @@ struct HeartbeatMonitor {
   Microseconds time = 0;  ///< 0: entry disabled
   bool active = false;    ///< a heartbeat has been received since configuration
   bool timedOut = false;
+  /// The entry had timed out, then got a new value: the error it found is to be cleared.
+  bool withdrawn = false;
   Microseconds deadline = kNever;
   uint8_t lastState = 0;
 };
@@ -25,36 +28,41 @@ class HeartbeatConsumer : public ObjectHook {
  public:
   static constexpr uint16_t kIndex = 0x1016;
 
-  enum class EventKind : uint8_t { kNone, kTimeout, kResumed };
+  /// kWithdrawn: an entry that had timed out has a new value (its error goes with the old one).
+  enum class EventKind : uint8_t { kNone, kTimeout, kResumed, kWithdrawn };
   struct Event {
     EventKind kind = EventKind::kNone;
     uint8_t nodeId = 0;
     uint8_t entry = 0;  ///< sub-index of 0x1016
   };
 
-  HeartbeatConsumer(od::ObjectDictionary& dictionary, HeartbeatMonitor* monitors,
+  HeartbeatConsumer(od::ObjectDictionary& dictionary, NodeClock& clock, HeartbeatMonitor* monitors,
                     size_t capacity) noexcept
-      : dictionary_(dictionary), monitors_(monitors), capacity_(capacity) {}
+      : dictionary_(dictionary), clock_(clock), monitors_(monitors), capacity_(capacity) {}
 
   /// Reads every entry of 0x1016; monitoring of an entry starts at its first heartbeat. With
-  /// `reset` every entry starts over; otherwise only entries whose value changed.
+  /// `reset` every entry starts over; otherwise only entries whose value changed, and those of
+  /// them that had timed out are withdrawn (a kWithdrawn event at the next process()).
   void configure(bool reset) noexcept;
 
   /// A heartbeat (or boot-up) frame from `nodeId`. Returns kResumed for an entry that had timed
   /// out (the first such entry).
   Event onHeartbeat(uint8_t nodeId, uint8_t state, Microseconds now) noexcept;
-  /// Returns one kTimeout event per call for an entry whose time has passed.
+  /// Returns one event per call: kWithdrawn for a withdrawn entry first, then kTimeout for an
+  /// entry whose time has passed.
   Event process(Microseconds now) noexcept;
   Microseconds nextDeadline() const noexcept;
 
   const HeartbeatMonitor* monitor(uint8_t subIndex) const noexcept;
 
-  /// 0x1016 writes: two enabled entries for the same node-id abort 0x06040043.
+  /// 0x1016 writes: two enabled entries for the same node-id abort 0x06040043. A write
+  /// configures the entries (configure(false)) and asks for a process() at once.
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
 
  private:
   od::ObjectDictionary& dictionary_;
+  NodeClock& clock_;
   HeartbeatMonitor* monitors_;
   size_t capacity_;
   size_t count_ = 0;

@@ -15,6 +15,7 @@ class NodeGuarding : public ObjectHook {
  public:
   static constexpr uint16_t kGuardTimeIndex = 0x100C;
   static constexpr uint16_t kLifeTimeFactorIndex = 0x100D;
+  static constexpr uint16_t kHeartbeatProducerIndex = 0x1017;
 
   enum class Event : uint8_t { kNone, kLifeTimeExpired, kResumed };
 
@@ -28,7 +29,9 @@ class NodeGuarding : public ObjectHook {
   /// A remote request on 0x700+id: replies state | toggle << 7 and toggles; (re)starts the
   /// life time. Returns kResumed when guarding resumes after an expiry.
   Event onRequest(NmtState state, Microseconds now) noexcept;
-  /// Returns kLifeTimeExpired once when no request came within the life time.
+  /// Returns kLifeTimeExpired once when no request came within the life time. When the
+  /// heartbeat producer time (0x1017) is not 0 by then, life guarding stops instead: the node
+  /// no longer answers requests while it sends heartbeats.
   Event process(Microseconds now) noexcept;
   Microseconds nextDeadline() const noexcept { return expired_ ? kNever : life_.next(); }
   bool expired() const noexcept { return expired_; }
