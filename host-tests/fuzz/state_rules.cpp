@@ -59,6 +59,24 @@ std::string checkSdo(const Node& node) {
 }
 
 /// The clock of day, once set, is a time of day (TIME frames past midnight are refused).
+/// The node raises EMCY 0x8130 for entry n of 0x1016 (source n) only while that entry has
+/// timed out: a new value of the entry, or reset communication, clears it.
+std::string checkHeartbeatErrors(const Node& node) {
+  constexpr uint16_t kHeartbeatError = 0x8130;
+  for (unsigned entry = 1; entry <= 0xFFU; ++entry) {
+    const auto sub = static_cast<uint8_t>(entry);
+    const HeartbeatMonitor* monitor = node.heartbeatConsumer().monitor(sub);
+    if (monitor == nullptr) {
+      break;
+    }
+    if (node.errorActive(kHeartbeatError, sub) && !monitor->timedOut) {
+      return "EMCY 0x8130 of 0x1016 sub-index " + std::to_string(entry) +
+             " active while its entry has not timed out";
+    }
+  }
+  return "";
+}
+
 std::string checkTime(const Node& node) {
   TimeOfDay time;
   if (node.timeOfDay(&time) && time.milliseconds >= TimeOfDay::kMillisecondsPerDay) {
@@ -79,6 +97,9 @@ std::string checkStateMachines(const Node& node, bool lss) {
   }
   if (problem.empty()) {
     problem = checkTime(node);
+  }
+  if (problem.empty()) {
+    problem = checkHeartbeatErrors(node);
   }
   return problem;
 }

@@ -15,7 +15,9 @@ namespace costa::fuzz {
 ///  * LSS: LssSlave::valid(), its active node-id is the node's, and a device without LSS has
 ///    left it in waiting state with no bit timing switch;
 ///  * SDO: SdoServer::valid(), and a transfer runs only in pre-operational or operational;
-///  * TIME: the clock of day, once set, is before midnight.
+///  * TIME: the clock of day, once set, is before midnight;
+///  * heartbeat consumer: the EMCY 0x8130 condition of entry n of 0x1016 (source n) is active
+///    only while that entry has timed out.
 /// Else what is wrong.
 std::string checkStateMachines(const Node& node, bool lss);
 

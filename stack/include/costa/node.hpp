@@ -172,6 +172,10 @@ class Node {
     emcy_.signal(code, registerBits, manufacturer);
   }
   uint8_t errorRegister() const noexcept { return emcy_.errorRegister(); }
+  /// True while the condition (`code`, `source`) is active. O(conditions).
+  bool errorActive(uint16_t code, uint8_t source = 0) const noexcept {
+    return emcy_.active(code, source);
+  }
   /// A CAN controller condition from the driver (ErrorControl::onControllerEvent); the EMCY it
   /// raises goes out before this returns.
   void onControllerEvent(CanControllerEvent event, Microseconds now) noexcept;
