@@ -58,7 +58,6 @@ std::string checkSdo(const Node& node) {
   return "";
 }
 
-/// The clock of day, once set, is a time of day (TIME frames past midnight are refused).
 /// The node raises EMCY 0x8130 for entry n of 0x1016 (source n) only while that entry has
 /// timed out: a new value of the entry, or reset communication, clears it.
 std::string checkHeartbeatErrors(const Node& node) {
@@ -77,6 +76,7 @@ std::string checkHeartbeatErrors(const Node& node) {
   return "";
 }
 
+/// The clock of day, once set, is a time of day (TIME frames past midnight are refused).
 std::string checkTime(const Node& node) {
   TimeOfDay time;
   if (node.timeOfDay(&time) && time.milliseconds >= TimeOfDay::kMillisecondsPerDay) {

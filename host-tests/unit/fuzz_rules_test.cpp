@@ -214,6 +214,17 @@ TEST_F(FuzzRules, StateMachinesOfAHealthyNodeAreValid) {
   EXPECT_EQ(checkStateMachines(node(), false), "LSS slave active on a device without LSS");
 }
 
+TEST_F(FuzzRules, AHeartbeatErrorNeedsItsTimedOutEntry) {
+  sdo({0x23, 0x16, 0x10, 0x01, 0x64, 0x00, 0x05, 0x00});  // 0x1016:01 = node 5, 100 ms
+  EXPECT_EQ(checkStateMachines(node(), true), "");
+  node().raiseError(0x8130, kErrorCommunication, nullptr, 200);  // no such entry: not checked
+  node().raiseError(0x8130, kErrorCommunication, nullptr, 0);    // life guarding's
+  EXPECT_EQ(checkStateMachines(node(), true), "");
+  node().raiseError(0x8130, kErrorCommunication, nullptr, 1);  // entry 1 has not timed out
+  EXPECT_EQ(checkStateMachines(node(), true),
+            "EMCY 0x8130 of 0x1016 sub-index 1 active while its entry has not timed out");
+}
+
 TEST(FuzzWatchingCan, AFrameDuringBusOffIsNoted) {
   WatchingCan can;
   const std::unique_ptr<FuzzedDevice> device = createFuzzedDevice("example", can, {});

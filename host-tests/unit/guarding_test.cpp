@@ -13,6 +13,13 @@ constexpr const char* kLifeTime300Ms = R"(
     rx 601 [8] 2F 0D 10 00 03 00 00 00   # life time factor 3: life time 300 ms
     tx 581 [8] 60 0D 10 00 00 00 00 00
 )";
+/// After kLifeTime300Ms: a request starts life guarding, then the heartbeat producer starts.
+constexpr const char* kGuardedThenHeartbeat200Ms = R"(
+    rx 701 [0] RTR
+    tx 701 [1] 7F                        # life guarding runs
+    rx 601 [8] 2B 17 10 00 C8 00 00 00   # heartbeat every 200 ms
+    tx 581 [8] 60 17 10 00 00 00 00 00
+)";
 
 TEST_F(Guarding, RepliesWithStateAndAlternatingToggleStartingAtZero) {
   EXPECT_TRANSCRIPT(R"(
@@ -117,11 +124,8 @@ TEST_F(Guarding, LifeGuardingThatRanStopsWhenTheHeartbeatStarts) {
   RecordingGuardEvents events;
   ASSERT_TRUE(bus_.node().addListener(events));
   EXPECT_TRANSCRIPT(kLifeTime300Ms);
+  EXPECT_TRANSCRIPT(kGuardedThenHeartbeat200Ms);
   EXPECT_TRANSCRIPT(R"(
-    rx 701 [0] RTR
-    tx 701 [1] 7F                        # life guarding runs
-    rx 601 [8] 2B 17 10 00 C8 00 00 00   # heartbeat every 200 ms
-    tx 581 [8] 60 17 10 00 00 00 00 00
     wait 200
     tx 701 [1] 7F
     wait 200
@@ -141,6 +145,25 @@ TEST_F(Guarding, LifeGuardingThatRanStopsWhenTheHeartbeatStarts) {
   )");
   EXPECT_EQ(events.expired, 1);
   EXPECT_EQ(events.resumed, 0);
+}
+
+// A request that comes while the heartbeat runs is not answered, and the life guarding it
+// would have fed stops at once: a heartbeat that ends before the life time does not leave it
+// to expire.
+TEST_F(Guarding, AnUnansweredRequestStopsLifeGuarding) {
+  EXPECT_TRANSCRIPT(kLifeTime300Ms);
+  EXPECT_TRANSCRIPT(kGuardedThenHeartbeat200Ms);
+  EXPECT_TRANSCRIPT(R"(
+    wait 100
+    rx 701 [0] RTR
+    silence                              # not answered
+    rx 601 [8] 2B 17 10 00 00 00 00 00   # heartbeat off before the life time ends
+    tx 581 [8] 60 17 10 00 00 00 00 00
+    wait 1000
+    silence                              # no EMCY 0x8130
+    rx 701 [0] RTR
+    tx 701 [1] FF                        # guarding again
+  )");
 }
 
 TEST_F(Guarding, ErrorBehaviourNoChangeOrStopped) {

@@ -40,11 +40,14 @@ bool ErrorControl::onFrame(const CanFrame& frame, uint8_t nodeId) noexcept {
     if (!features::kNodeGuarding || !profile_.nodeGuarding) {
       return false;  // a node without node guarding does not answer remote requests
     }
+    if (frame.id != cob::kErrorControlBase + nodeId) {
+      return true;
+    }
     // CiA 301 7.2.8.3.2: with a heartbeat producer time, the heartbeat protocol is used, not
-    // node guarding: a request is not answered and starts no life guarding.
-    if (frame.id == cob::kErrorControlBase + nodeId &&
-        dictionary_.readUnsigned32(kHeartbeatProducerIndex, 0, 0) == 0U &&
-        guarding_.onRequest(nmt_.state(), clock_.now) == NodeGuarding::Event::kResumed) {
+    // node guarding: a request is not answered, and the life guarding it would feed stops.
+    if (dictionary_.readUnsigned32(kHeartbeatProducerIndex, 0, 0) != 0U) {
+      guarding_.ignoreRequest();
+    } else if (guarding_.onRequest(nmt_.state(), clock_.now) == NodeGuarding::Event::kResumed) {
       if (profile_.emcyForErrors) {
         emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
       }

@@ -60,7 +60,7 @@ HeartbeatConsumer::Event HeartbeatConsumer::process(Microseconds now) noexcept {
     HeartbeatMonitor& monitor = monitors_[i];
     if (monitor.withdrawn) {
       monitor.withdrawn = false;
-      return Event{EventKind::kWithdrawn, monitor.nodeId, static_cast<uint8_t>(i + 1U)};
+      return Event{EventKind::kWithdrawn, 0, static_cast<uint8_t>(i + 1U)};
     }
     if (monitor.active && !monitor.timedOut && reached(now, monitor.deadline)) {
       monitor.timedOut = true;
@@ -74,6 +74,9 @@ Microseconds HeartbeatConsumer::nextDeadline() const noexcept {
   Microseconds next = kNever;
   for (size_t i = 0; i < count_; ++i) {
     const HeartbeatMonitor& monitor = monitors_[i];
+    if (monitor.withdrawn) {
+      return clock_.now;  // to be reported at once
+    }
     if (monitor.active && !monitor.timedOut) {
       next = earliest(next, monitor.deadline);
     }

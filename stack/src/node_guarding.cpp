@@ -52,8 +52,7 @@ NodeGuarding::Event NodeGuarding::process(Microseconds now) noexcept {
     // The heartbeat producer started while guarding ran: requests are no longer answered
     // (CiA 301 7.2.8.3.2), so the life time ran out for want of them. Life guarding stops
     // until the next answered request.
-    guarded_ = false;
-    life_.stop();
+    ignoreRequest();
     return Event::kNone;
   }
   expired_ = true;

@@ -95,6 +95,7 @@ class AbsentNodeGuarding final : public AbsentService {
     (void)nodeId;
     (void)toggleStart;
   }
+  void ignoreRequest() noexcept {}
   NodeGuarding::Event onRequest(NmtState state, Microseconds now) noexcept {
     (void)state;
     (void)now;

@@ -32,8 +32,8 @@ class HeartbeatConsumer : public ObjectHook {
   enum class EventKind : uint8_t { kNone, kTimeout, kResumed, kWithdrawn };
   struct Event {
     EventKind kind = EventKind::kNone;
-    uint8_t nodeId = 0;
-    uint8_t entry = 0;  ///< sub-index of 0x1016
+    uint8_t nodeId = 0;  ///< the producer (0 for kWithdrawn: the entry has a new one)
+    uint8_t entry = 0;   ///< sub-index of 0x1016
   };
 
   HeartbeatConsumer(od::ObjectDictionary& dictionary, NodeClock& clock, HeartbeatMonitor* monitors,
@@ -48,8 +48,8 @@ class HeartbeatConsumer : public ObjectHook {
   /// A heartbeat (or boot-up) frame from `nodeId`. Returns kResumed for an entry that had timed
   /// out (the first such entry).
   Event onHeartbeat(uint8_t nodeId, uint8_t state, Microseconds now) noexcept;
-  /// Returns one event per call: kWithdrawn for a withdrawn entry first, then kTimeout for an
-  /// entry whose time has passed.
+  /// Returns one event per call, entry by entry: kWithdrawn for a withdrawn entry, kTimeout
+  /// for one whose time has passed. Call until kNone.
   Event process(Microseconds now) noexcept;
   Microseconds nextDeadline() const noexcept;
 

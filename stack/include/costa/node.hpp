@@ -160,6 +160,9 @@ class Node {
   /// Raises a device error: EMCY with `code`, `registerBits` (ErrorRegisterBit) and up to 5
   /// manufacturer-specific bytes; 0x1001 and 0x1003 follow (EmcyProducer::raise). False when the
   /// condition was already active or the condition table is full (the EMCY still goes out).
+  /// `source` tells conditions of one code apart. With ErrorControlProfile::emcyForErrors, the
+  /// node's own 0x8130 conditions use source 0 (life guarding) and n (entry n of 0x1016): a
+  /// device that raises 0x8130 itself then uses other sources.
   bool raiseError(uint16_t code, uint8_t registerBits, const uint8_t* manufacturer = nullptr,
                   uint8_t source = 0) noexcept {
     return emcy_.raise(code, source, registerBits, manufacturer);

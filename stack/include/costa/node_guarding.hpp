@@ -33,6 +33,12 @@ class NodeGuarding : public ObjectHook {
   /// heartbeat producer time (0x1017) is not 0 by then, life guarding stops instead: the node
   /// no longer answers requests while it sends heartbeats.
   Event process(Microseconds now) noexcept;
+  /// A request the node does not answer (the heartbeat producer runs): life guarding stops
+  /// until the next answered request; an expiry already reported stays until then.
+  void ignoreRequest() noexcept {
+    guarded_ = false;
+    life_.stop();
+  }
   Microseconds nextDeadline() const noexcept { return expired_ ? kNever : life_.next(); }
   bool expired() const noexcept { return expired_; }
 
