@@ -284,7 +284,7 @@ class Session {
       if (next_ == kNever || before(now_, next_)) {
         return "";
       }
-      if (next_ != now_) {
+      if (next_ != atOnce(now_)) {
         return "process() at " + std::to_string(now_) + " us asked to run again at " +
                std::to_string(next_) + " us, in the past";
       }

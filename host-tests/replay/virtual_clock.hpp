@@ -40,7 +40,7 @@ class VirtualClock {
       if (next_ == kNever || before(now_, next_)) {
         return Outcome::kOk;
       }
-      if (next_ != now_) {
+      if (next_ != atOnce(now_)) {
         return Outcome::kPast;
       }
       if (run == kImmediateRunsAllowed) {

@@ -1,6 +1,8 @@
 // Heartbeat consumer (0x1016): monitoring starts at the first heartbeat, timeouts raise EMCY
 // 0x8130 (manufacturer byte: the producer's node-id) and apply 0x1029, a returning producer
 // resets the error.
+#include <algorithm>
+
 #include "example_fixture.hpp"
 
 namespace costa::test {
@@ -91,6 +93,26 @@ TEST_F(HeartbeatConsumerTest, ANewEntryClearsTheErrorItsOldValueFound) {
   )");
   EXPECT_EQ(events.lastTimeout, 6U);
   EXPECT_EQ(events.lastResumed, 0U);  // no heartbeat came back
+}
+
+// The same at the one microsecond whose clock value means "no deadline" (kNever): the
+// withdrawal is still due at once (atOnce()), not left for a later deadline.
+TEST_F(HeartbeatConsumerTest, ANewEntryAtTheLastMicrosecondOfTheClockClearsItsError) {
+  EXPECT_TRANSCRIPT(kNode5Every100Ms);
+  EXPECT_TRANSCRIPT(R"(
+    rx 705 [1] 05
+    wait 100
+    tx 081 [8] 30 81 11 05 00 00 00 00
+  )");
+  while (bus_.now() != kNever) {  // in steps the node's clock follows (kLongestDelay)
+    bus_.advance(std::min<Microseconds>(kNever - bus_.now(), kLongestDelay));
+  }
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 16 10 01 00 00 00 00   # the entry off
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # no error left
+  )");
+  EXPECT_EQ(bus_.node().now(), kNever);
 }
 
 TEST_F(HeartbeatConsumerTest, EntriesWithNodeIdZeroOrTimeZeroAreDisabled) {

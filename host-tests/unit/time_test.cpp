@@ -1,6 +1,7 @@
 // The 32-bit microsecond clock (costa/time.hpp): comparisons across its wrap, LongTimer, and the
 // CiA 301 periods longer than half the clock's range (SYNC period, node guarding life time).
 #include "costa/time.hpp"
+#include "costa/node_clock.hpp"
 #include "example_fixture.hpp"
 
 namespace costa::test {
@@ -25,6 +26,18 @@ TEST(Time, ADeadlineIsNeverTheValueForNoDeadline) {
   EXPECT_EQ(at(kNever - 5U, 5U), 0U);  // one microsecond late rather than never
   EXPECT_EQ(at(kJustBeforeWrap, 0x100U), 0U);
   EXPECT_EQ(at(kJustBeforeWrap, 0x110U), 0x10U);
+}
+
+TEST(Time, AtOnceIsDueEvenAtTheClockValueForNoDeadline) {
+  EXPECT_EQ(atOnce(0x10U), 0x10U);
+  EXPECT_EQ(atOnce(kNever), kNever - 1U);
+  NodeClock clock;
+  clock.start(kNever);
+  clock.schedule(atOnce(clock.now));
+  EXPECT_TRUE(clock.due());
+  clock.next = kNever;
+  clock.schedule(clock.now);  // what "now" would be: no deadline
+  EXPECT_FALSE(clock.due());
 }
 
 TEST(Time, ALongTimerWaitsInStepsAndFiresOnceAtTheEnd) {

@@ -154,7 +154,7 @@ void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
     }
   }
   ++pendingCount_;
-  clock_.schedule(nextAllowed_ == kNever ? clock_.now : nextAllowed_);
+  clock_.schedule(nextAllowed_ == kNever ? atOnce(clock_.now) : nextAllowed_);
 }
 
 uint32_t EmcyProducer::cobId() const noexcept {
@@ -199,7 +199,7 @@ Microseconds EmcyProducer::nextDeadline(NmtState state) const noexcept {
       (state != NmtState::kPreOperational && state != NmtState::kOperational)) {
     return kNever;
   }
-  return clock_.now;
+  return atOnce(clock_.now);
 }
 
 AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,

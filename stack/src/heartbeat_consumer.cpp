@@ -75,7 +75,7 @@ Microseconds HeartbeatConsumer::nextDeadline() const noexcept {
   for (size_t i = 0; i < count_; ++i) {
     const HeartbeatMonitor& monitor = monitors_[i];
     if (monitor.withdrawn) {
-      return clock_.now;  // to be reported at once
+      return atOnce(clock_.now);  // to be reported at once
     }
     if (monitor.active && !monitor.timedOut) {
       next = earliest(next, monitor.deadline);
@@ -107,7 +107,7 @@ AbortCode HeartbeatConsumer::write(od::ObjectDictionary& dictionary, const od::E
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
     configure(false);
-    clock_.schedule(clock_.now);  // process() reports a withdrawn entry at once
+    clock_.schedule(atOnce(clock_.now));  // process() reports a withdrawn entry at once
   }
   return written;
 }

@@ -223,7 +223,7 @@ Microseconds Node::runDue() noexcept {
   next = earliest(next, nmt_.nextDeadline());
   // Every deadline is one of these: what the services scheduled while they ran is in them. One
   // that has passed already (work a service found due after its turn) means: at once.
-  clock_.next = next != kNever && before(next, at) ? at : next;
+  clock_.next = next != kNever && before(next, at) ? atOnce(at) : next;
   return clock_.next;
 }
 

@@ -78,7 +78,7 @@ void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) no
   state_ = State::kBlockUpload;
   armTimeout(now);
   if (blockSegmentsReady()) {
-    clock_.schedule(now);
+    clock_.schedule(atOnce(now));
   }
 }
 
@@ -91,7 +91,7 @@ void SdoServer::continueBlock(const uint8_t* request, Microseconds now) noexcept
     afterBlockStep(result, blockUpload_.finished(), now);
   }
   if (blockSegmentsReady()) {
-    clock_.schedule(now);  // a sub-block to send: at once
+    clock_.schedule(atOnce(now));  // a sub-block to send
   }
 }
 

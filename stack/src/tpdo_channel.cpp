@@ -147,7 +147,7 @@ Microseconds TpdoChannel::nextDeadline(Microseconds now) const noexcept {
   }
   // The end of an inhibit time is a deadline too: it expires there.
   const Microseconds next = earliest(eventDeadline_, inhibitUntil_);
-  return event_ && inhibitUntil_ == kNever ? now : next;
+  return event_ && inhibitUntil_ == kNever ? atOnce(now) : next;
 }
 
 void TpdoChannel::restartTimers(PdoContext& context, Microseconds now) noexcept {

@@ -90,8 +90,9 @@ class Node {
   void onFrame(const CanFrame& frame, Microseconds now) noexcept;
   /// Runs what is due at `now`, offers queued frames to the controller, and returns the time by
   /// which it must be called again (kNever: nothing scheduled; `now` itself: call again at once,
-  /// a block upload waiting for room). With nothing due and nothing queued it only compares
-  /// `now` with that time.
+  /// a block upload waiting for room; at the one instant whose value is kNever's, 1 µs before
+  /// it, atOnce(now)). With nothing due and nothing queued it only compares `now` with that
+  /// time.
   Microseconds process(Microseconds now) noexcept {
     clock_.advance(now);
     if (tx_.pending()) {

@@ -34,6 +34,12 @@ inline constexpr Microseconds at(Microseconds now, uint32_t delay) noexcept {
   return deadline == kNever ? 0U : deadline;
 }
 
+/// The deadline "at once" at `now`: `now` itself, or 1 µs earlier at the one instant that
+/// has kNever's value (kNever is no deadline), so that work scheduled then is due, not never.
+inline constexpr Microseconds atOnce(Microseconds now) noexcept {
+  return now == kNever ? now - 1U : now;
+}
+
 /// True when `deadline` (not kNever) has come at `now`.
 inline constexpr bool reached(Microseconds now, Microseconds deadline) noexcept {
   return deadline != kNever && static_cast<int32_t>(now - deadline) >= 0;
