@@ -33,7 +33,7 @@ TEST(Time, AtOnceIsDueEvenAtTheClockValueForNoDeadline) {
   EXPECT_EQ(atOnce(kNever), kNever - 1U);
   NodeClock clock;
   clock.start(kNever);
-  clock.schedule(atOnce(clock.now));
+  clock.scheduleNow();
   EXPECT_TRUE(clock.due());
   clock.next = kNever;
   clock.schedule(clock.now);  // what "now" would be: no deadline

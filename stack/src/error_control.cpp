@@ -26,7 +26,8 @@ void ErrorControl::reset(uint8_t nodeId) noexcept {
       emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
     }
     for (uint8_t entry = 1; consumer_.monitor(entry) != nullptr; ++entry) {
-      if (consumer_.monitor(entry)->timedOut || consumer_.monitor(entry)->withdrawn) {
+      const HeartbeatMonitor& monitor = *consumer_.monitor(entry);
+      if (monitor.timedOut || monitor.withdrawn) {
         emcy_.clear(kEmcyLifeGuardOrHeartbeat, entry);
       }
     }
@@ -92,18 +93,16 @@ void ErrorControl::onHeartbeatEvent(const HeartbeatConsumer::Event& event) noexc
     listeners_.notify(
         [&event](NodeEvents& listener) { listener.onHeartbeatTimeout(event.nodeId); });
     onCommunicationError();
-  } else if (event.kind == HeartbeatConsumer::EventKind::kWithdrawn) {
-    // Its new value starts monitoring over, as reset communication does (reset()). The device
-    // hears of it no more than of a reset: no producer resumed.
+  } else if (event.kind != HeartbeatConsumer::EventKind::kNone) {
+    // kResumed, or kWithdrawn: the entry's new value starts monitoring over, as reset
+    // communication does (reset()), and the device hears of it no more than of a reset.
     if (profile_.emcyForErrors) {
       emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
     }
-  } else if (event.kind == HeartbeatConsumer::EventKind::kResumed) {
-    if (profile_.emcyForErrors) {
-      emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
+    if (event.kind == HeartbeatConsumer::EventKind::kResumed) {
+      listeners_.notify(
+          [&event](NodeEvents& listener) { listener.onHeartbeatResumed(event.nodeId); });
     }
-    listeners_.notify(
-        [&event](NodeEvents& listener) { listener.onHeartbeatResumed(event.nodeId); });
   }
 }
 

@@ -107,7 +107,7 @@ AbortCode HeartbeatConsumer::write(od::ObjectDictionary& dictionary, const od::E
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
     configure(false);
-    clock_.schedule(atOnce(clock_.now));  // process() reports a withdrawn entry at once
+    clock_.scheduleNow();  // process() reports a withdrawn entry at once
   }
   return written;
 }

@@ -98,7 +98,7 @@ void NmtStateMachine::resetCommunication() noexcept {
   services_.heartbeat.restart(services_.clock.now);
   if (automaticStart_) {
     startPending_ = true;  // at the next process(), after the device has run
-    services_.clock.schedule(atOnce(services_.clock.now));
+    services_.clock.scheduleNow();
   }
 }
 
@@ -146,7 +146,7 @@ void NmtStateMachine::setState(NmtState state) noexcept {
   if (state == NmtState::kOperational) {
     services_.pdos.start(services_.clock.now);
   }
-  services_.clock.schedule(atOnce(services_.clock.now));  // what the new state allows may be due
+  services_.clock.scheduleNow();  // what the new state allows may be due
   services_.listeners.notify(
       [previous, state](NodeEvents& listener) { listener.onNmtStateChanged(previous, state); });
 }

@@ -81,7 +81,7 @@ void Node::start(Microseconds now) noexcept {
 void Node::onControllerEvent(CanControllerEvent event, Microseconds now) noexcept {
   clock_.advance(now);
   errorControl_.onControllerEvent(event);
-  clock_.schedule(atOnce(clock_.now));
+  clock_.scheduleNow();
   process(clock_.now);  // the EMCY it raised leaves now
 }
 

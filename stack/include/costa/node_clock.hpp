@@ -26,6 +26,8 @@ struct NodeClock {
   }
   /// Something may be due at `deadline` (kNever: nothing). O(1).
   void schedule(Microseconds deadline) noexcept { next = earliest(next, deadline); }
+  /// Something is due at once (atOnce(now): at the instant whose value is kNever's too).
+  void scheduleNow() noexcept { schedule(atOnce(now)); }
   /// True when `next` has come: process() has work.
   bool due() const noexcept { return reached(now, next); }
 };

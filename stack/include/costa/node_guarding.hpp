@@ -15,7 +15,6 @@ class NodeGuarding : public ObjectHook {
  public:
   static constexpr uint16_t kGuardTimeIndex = 0x100C;
   static constexpr uint16_t kLifeTimeFactorIndex = 0x100D;
-  static constexpr uint16_t kHeartbeatProducerIndex = 0x1017;
 
   enum class Event : uint8_t { kNone, kLifeTimeExpired, kResumed };
 
