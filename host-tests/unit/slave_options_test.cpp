@@ -65,6 +65,27 @@ TEST(SlaveOptions, RejectsBadInputWithOneClearLine) {
   EXPECT_EQ(error.find('\n'), std::string::npos);
 }
 
+TEST(SlaveOptions, SdoTimeoutInMilliseconds) {
+  SlaveOptions options;
+  std::string error;
+  ASSERT_TRUE(parse({"example"}, &options, &error));
+  EXPECT_EQ(options.sdoTimeoutMs, 0U);  // each device's own
+  ASSERT_TRUE(parse({"--sdo-timeout", "3000", "example"}, &options, &error)) << error;
+  EXPECT_EQ(options.sdoTimeoutMs, 3000U);
+  ASSERT_TRUE(parse({"--sdo-timeout", "1", "example"}, &options, &error)) << error;
+  EXPECT_EQ(options.sdoTimeoutMs, 1U);
+  ASSERT_TRUE(parse({"example", "--sdo-timeout", "100000"}, &options, &error)) << error;
+  EXPECT_EQ(options.sdoTimeoutMs, kLongestSdoTimeoutMs);
+  for (const char* bad :
+       {"0", "100001", "-5", "+5", "1.5", "2s", "", "0x10", "99999999999999999999"}) {
+    EXPECT_FALSE(parse({"--sdo-timeout", bad, "example"}, &options, &error)) << bad;
+    EXPECT_EQ(error, std::string("invalid SDO timeout '") + bad + "': expected 1..100000 ms");
+  }
+  EXPECT_FALSE(parse({"example", "--sdo-timeout"}, &options, &error));
+  EXPECT_EQ(error, "--sdo-timeout needs a value");
+  EXPECT_NE(slaveUsage().find("--sdo-timeout MS"), std::string::npos);
+}
+
 TEST(SlaveOptions, RefusesANodeIdTheDeviceDoesNotTake) {
   SlaveOptions options;
   std::string error;

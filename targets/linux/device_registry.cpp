@@ -78,6 +78,7 @@ std::unique_ptr<DeviceTarget> createDevice(const DeviceEntry& device, CanTransmi
   config.nodeId = static_cast<uint8_t>(config.nodeIdGiven ? options.nodeId : 0);
   config.storage = storage.get();
   config.bitRateControl = options.bitRate;
+  config.sdoTimeout = options.sdoTimeout;
   std::unique_ptr<DeviceTarget> target = device.build(can, config, std::move(storage));
   if (options.serialNumber != 0U && !target->overrideSerialNumber(options.serialNumber)) {
     *error = std::string(device.name) + ": no room for a listener setting its serial number";

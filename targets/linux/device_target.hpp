@@ -20,6 +20,8 @@ struct TargetOptions {
   std::string storagePath;  ///< --storage, or empty.
   /// The CAN port's bit rate, for NodeSettings::bitRateControl (null: none).
   CanBitRateControl* bitRate = nullptr;
+  /// The SDO server's timeout (--sdo-timeout), or 0: the device's own.
+  Microseconds sdoTimeout = 0;
   /// The serial number in 0x1018:04 from every reset communication on, or 0: the device's own.
   uint32_t serialNumber = 0;
 };

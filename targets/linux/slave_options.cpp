@@ -24,6 +24,22 @@ bool parseNodeId(const std::string& text, int* value) {
   return true;
 }
 
+/// --sdo-timeout's value: 1..kLongestSdoTimeoutMs milliseconds, decimal.
+bool parseSdoTimeout(const std::string& text, uint32_t* milliseconds) {
+  if (text.empty() || text[0] < '0' || text[0] > '9') {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const auto parsed = std::strtoul(text.c_str(), &end, 10);
+  if (errno != 0 || end == nullptr || *end != '\0' || parsed < 1U ||
+      parsed > kLongestSdoTimeoutMs) {
+    return false;
+  }
+  *milliseconds = static_cast<uint32_t>(parsed);
+  return true;
+}
+
 /// An option without a value: sets it and returns true, or returns false for anything else.
 bool setFlag(const std::string& argument, SlaveOptions* options) {
   if (argument == "--help" || argument == "-h") {
@@ -53,6 +69,27 @@ std::string* textOption(const std::string& argument, SlaveOptions& options) {
     return &options.edsDevice;
   }
   return nullptr;
+}
+
+/// An option with a number for its value.
+bool isNumberOption(const std::string& argument) {
+  return argument == "--node-id" || argument == "--sdo-timeout";
+}
+
+/// Parses the value `text` of a number option (isNumberOption) into `options`, or returns false
+/// with one line in `error`.
+bool parseNumberOption(const std::string& argument, const std::string& text, SlaveOptions* options,
+                       std::string* error) {
+  if (argument == "--node-id" && !parseNodeId(text, &options->nodeId)) {
+    *error = "invalid node-id '" + text + "': expected 1..127 (or 255: unconfigured, LSS only)";
+    return false;
+  }
+  if (argument == "--sdo-timeout" && !parseSdoTimeout(text, &options->sdoTimeoutMs)) {
+    *error = "invalid SDO timeout '" + text + "': expected 1.." +
+             std::to_string(kLongestSdoTimeoutMs) + " ms";
+    return false;
+  }
+  return true;
 }
 
 /// Splits DEVICE[@NODE-ID]. False with one line in `error` when the node-id is invalid.
@@ -174,6 +211,10 @@ std::string slaveUsage() {
          "                   (K from 1, DEVICE the device's name, e.g. mseries-3.bin)\n"
          "  --trace          print every frame received and sent, with its meaning (with\n"
          "                   several nodes each line names its node: @05 tx 705 ...)\n"
+         "  --sdo-timeout MS how long an SDO transfer waits for the client before the node\n"
+         "                   aborts it (0x05040000), 1.." +
+         std::to_string(kLongestSdoTimeoutMs) +
+         " ms (default: the device's own)\n"
          "  --control PATH   accept simulation commands (for example 'angle 90' for gra/grn) as\n"
          "                   datagrams on a UNIX socket at PATH; each gets 'ok' or 'error: ...';\n"
          "                   with several nodes a command names its node: '@0x10 angle 90'\n"
@@ -201,28 +242,18 @@ bool parseSlaveOptions(const std::vector<std::string>& arguments, SlaveOptions* 
   std::vector<std::string> positional;
   for (size_t i = 0; i < arguments.size(); ++i) {
     const std::string& argument = arguments[i];
-    auto value = [&](std::string* out) {
+    if (setFlag(argument, options)) {
+      continue;
+    }
+    if (textOption(argument, *options) != nullptr || isNumberOption(argument)) {
       if (i + 1U >= arguments.size()) {
         *error = argument + " needs a value";
         return false;
       }
-      *out = arguments[++i];
-      return true;
-    };
-    if (setFlag(argument, options)) {
-      continue;
-    }
-    if (std::string* destination = textOption(argument, *options)) {
-      if (!value(destination)) {
-        return false;
-      }
-    } else if (argument == "--node-id") {
-      std::string text;
-      if (!value(&text)) {
-        return false;
-      }
-      if (!parseNodeId(text, &options->nodeId)) {
-        *error = "invalid node-id '" + text + "': expected 1..127 (or 255: unconfigured, LSS only)";
+      const std::string& value = arguments[++i];
+      if (std::string* destination = textOption(argument, *options)) {
+        *destination = value;
+      } else if (!parseNumberOption(argument, value, options, error)) {
         return false;
       }
     } else if (!argument.empty() && argument[0] == '-') {

@@ -1,6 +1,6 @@
 // The command line of costa-slave:
 //   costa-slave [--iface NAME] [--node-id N] [--storage FILE|DIR] [--trace] [--control PATH]
-//               DEVICE[@NODE-ID] [DEVICE[@NODE-ID] ...]
+//               [--sdo-timeout MS] DEVICE[@NODE-ID] [DEVICE[@NODE-ID] ...]
 #pragma once
 
 #include <stddef.h>
@@ -21,12 +21,18 @@ struct SlaveOptions {
   int nodeId = -1;          ///< --node-id: the node-id of a DEVICE given without @; -1: none.
   std::string storagePath;  ///< --storage: a file (one node) or a directory (several)
   std::string controlPath;  ///< --control: a UNIX datagram socket for simulation commands
+  /// --sdo-timeout: how long every node's SDO server waits for the client within a transfer,
+  /// in ms (1..kLongestSdoTimeoutMs); 0: each device's own.
+  uint32_t sdoTimeoutMs = 0;
   bool trace = false;
   bool help = false;
   bool listDevices = false;
   std::string edsDevice;            ///< --eds DEVICE: print that device's EDS and exit
   std::vector<NodeArgument> nodes;  ///< the nodes, in the command line's order
 };
+
+/// The longest --sdo-timeout: 100 s, well within a deadline's reach (kLongestDelay).
+inline constexpr uint32_t kLongestSdoTimeoutMs = 100000;
 
 /// The most nodes one costa-slave runs: every node-id of CiA 301.
 inline constexpr size_t kMostNodes = 127;

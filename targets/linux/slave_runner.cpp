@@ -138,6 +138,7 @@ bool createNodes(const SlaveOptions& options, LocalBus& bus, CanBitRateControl& 
     targetOptions.nodeId = options.nodes[i].nodeId;
     targetOptions.storagePath = nodeStoragePath(options, i);
     targetOptions.bitRate = &bitRate;
+    targetOptions.sdoTimeout = millisecondsToMicroseconds(options.sdoTimeoutMs);
     targetOptions.serialNumber = several ? static_cast<uint32_t>(i + 1U) : 0U;
     std::unique_ptr<DeviceTarget> target =
         createDevice(*findDevice(options.nodes[i].device), bus.nextPort(), targetOptions, error);

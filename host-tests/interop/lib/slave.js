@@ -3,6 +3,7 @@
 
 const { spawn } = require('node:child_process');
 const path = require('node:path');
+const { sdoTimeoutMs } = require('./sdo');
 
 const repository = path.resolve(__dirname, '..', '..', '..');
 
@@ -13,7 +14,9 @@ function slavePath() {
 
 class Slave {
   constructor(device, { iface = 'vcan0', nodeId } = {}) {
-    const args = ['--iface', iface];
+    // The server waits for the master as long as the master waits for it: a stalled VM then
+    // fails a transfer on neither side before the other.
+    const args = ['--iface', iface, '--sdo-timeout', String(sdoTimeoutMs)];
     if (nodeId !== undefined) {
       args.push('--node-id', String(nodeId));
     }

@@ -68,10 +68,14 @@ struct DeviceConfig {
   NvStorage* storage = nullptr;
   /// The CAN controller to re-time on a bit rate change, or null.
   CanBitRateControl* bitRateControl = nullptr;
+  /// How long the SDO server waits for the client within a transfer (costa-slave
+  /// --sdo-timeout), or 0: the device's own (NodeSettings::sdoTimeout).
+  Microseconds sdoTimeout = 0;
 };
 
 /// `settings` (a device's constant choices) with what `config` gives: the node-id when given
-/// (then it wins over a stored one at power-on), the storage when given, the bit rate control.
+/// (then it wins over a stored one at power-on), the storage when given, the bit rate control,
+/// the SDO timeout when given.
 constexpr NodeSettings configured(NodeSettings settings, const DeviceConfig& config) noexcept {
   if (config.nodeIdGiven) {
     settings.nodeId = config.nodeId;
@@ -81,6 +85,9 @@ constexpr NodeSettings configured(NodeSettings settings, const DeviceConfig& con
     settings.storage = config.storage;
   }
   settings.bitRateControl = config.bitRateControl;
+  if (config.sdoTimeout != 0U) {
+    settings.sdoTimeout = config.sdoTimeout;
+  }
   return settings;
 }
 
