@@ -62,6 +62,36 @@ TEST_F(ParameterStoreTest, ASavedGroupIsLoadedAtTheNextBootAndOnlyThatGroup) {
   EXPECT_EQ(boot.od.dictionary.readUnsigned(0x2000, 2, 0), 0U);
 }
 
+// Values a firmware with wider limits stored (the same layout): each loads as its default, a
+// `$NODEID` one with the node-id of the load; the values within the limits load.
+TEST_F(ParameterStoreTest, AValueOutsideItsLimitsLoadsAsItsDefault) {
+  store(0x2002, 0, 21);      // 10..20
+  store(0x2008, 0, 0x51);    // $NODEID+0x10, 0x11..0x50
+  store(0x2000, 2, 0x4321);  // no limits
+  EXPECT_EQ(store_.save(kApplication), StoreResult::kOk);
+  NextBoot boot(medium_);
+  EXPECT_EQ(boot.store.load(kApplication), StoreResult::kOk);
+  EXPECT_EQ(boot.od.dictionary.readUnsigned(0x2002, 0, 0), 15U);
+  EXPECT_EQ(boot.od.dictionary.readUnsigned(0x2008, 0, 0), 0x10U + kNodeId);
+  EXPECT_EQ(boot.od.dictionary.readUnsigned(0x2000, 2, 0), 0x4321U);
+
+  store(0x2002, 0, 20);  // the highest of each: loaded
+  store(0x2008, 0, 0x50);
+  EXPECT_EQ(store_.save(kApplication), StoreResult::kOk);
+  NextBoot same(medium_);
+  EXPECT_EQ(same.store.load(kApplication), StoreResult::kOk);
+  EXPECT_EQ(same.od.dictionary.readUnsigned(0x2002, 0, 0), 20U);
+  EXPECT_EQ(same.od.dictionary.readUnsigned(0x2008, 0, 0), 0x50U);
+
+  // Stored as 0x50 - 5 (without the node-id), loaded with node-id 0x10: 0x5B is above the limit.
+  ServiceDictionary other(0x10);
+  ParameterStore otherStore(other.dictionary, medium_);
+  ASSERT_TRUE(otherStore.layOut());
+  EXPECT_EQ(otherStore.load(kApplication), StoreResult::kOk);
+  EXPECT_EQ(other.dictionary.readUnsigned(0x2008, 0, 0), 0x20U) << "its default for node-id 0x10";
+  EXPECT_EQ(other.dictionary.readUnsigned(0x2002, 0, 0), 20U);
+}
+
 TEST_F(ParameterStoreTest, SaveGroupsSavesEveryGroupItHolds) {
   store(0x1017, 0, 250);
   store(0x2000, 2, 0x4321);

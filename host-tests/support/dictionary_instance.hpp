@@ -35,7 +35,9 @@ inline std::vector<uint8_t> groupBytes(od::ObjectDictionary& dictionary, uint8_t
 }
 
 /// Fills every RAM byte of `group` with a pattern: byte j becomes seed * 31 + j * 7 + 1, so the
-/// patterns of two seeds that differ by less than 256 differ in every byte.
+/// patterns of two seeds that differ by less than 256 differ in every byte, except in an entry
+/// whose pattern the dictionary refuses (outside its limits, a BOOLEAN above 1): that one keeps
+/// its default, as a load would give it.
 inline void fillGroup(od::ObjectDictionary& dictionary, uint8_t group, unsigned seed) {
   size_t j = 0;
   for (const od::EntryRef& ref : od::Entries(dictionary.definition())) {
@@ -45,6 +47,13 @@ inline void fillGroup(od::ObjectDictionary& dictionary, uint8_t group, unsigned 
     }
     for (size_t k = 0; k < ref.size(); ++k, ++j) {
       address[k] = static_cast<uint8_t>(seed * 31U + j * 7U + 1U);
+    }
+    uint8_t wire[8] = {};
+    if (ref.size() <= sizeof(wire)) {
+      dictionary.readNumber(ref, wire);
+      if (dictionary.check(ref, wire, ref.size()) != AbortCode::kNone) {
+        dictionary.restoreDefault(ref);
+      }
     }
   }
 }

@@ -101,6 +101,38 @@ TEST_F(StoreRestore, StoredValuesSurviveResetNodeAndPowerCycles) {
   EXPECT_EQ(value(0x2000, 0), 20000U);
 }
 
+// A firmware whose limits were wider stored values this one refuses (the layout is the same:
+// layoutId does not cover limits). Each such value loads as its entry's default; the others load.
+TEST_F(StoreRestore, AStoredValueThisFirmwareRefusesLoadsAsItsDefault) {
+  EXPECT_TRANSCRIPT(std::string(kChangeValues) + R"(
+    rx 601 [8] 2F 29 10 01 02 00 00 00   # communication error behaviour 2: its highest
+    tx 581 [8] 60 29 10 01 00 00 00 00
+    rx 601 [8] 2F 04 20 01 01 00 00 00   # BOOLEAN 0x2004:01 true
+    tx 581 [8] 60 04 20 01 00 00 00 00
+    rx 601 [8] 2F 29 10 01 03 00 00 00   # above 0x1029:01's limits (0..2)
+    tx 581 [8] 80 29 10 01 31 00 09 06   # 0x06090031: value too high
+  )");
+  // What the wider firmware would have stored: 3, and a BOOLEAN of 2.
+  od::ObjectDictionary& dictionary = bus_->node().dictionary();
+  ASSERT_TRUE(dictionary.storeUnsigned(0x1029, 1, 3));
+  ASSERT_TRUE(dictionary.storeUnsigned(0x2004, 1, 2));
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 10 10 01 73 61 76 65   # "save" all
+    tx 581 [8] 60 10 10 01 00 00 00 00
+  )");
+  powerOn();
+  EXPECT_EQ(value(0x1029, 1), 0U) << "the default, not 3";
+  EXPECT_EQ(value(0x2004, 1), 0U) << "the default, not 2";
+  EXPECT_EQ(value(0x1005, 0), 0x90U) << "the rest of the communication area";
+  EXPECT_EQ(value(0x2000, 0), 20000U) << "the rest of the application area";
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 40 29 10 01 00 00 00 00
+    tx 581 [8] 4F 29 10 01 00 00 00 00
+    rx 601 [8] 40 04 20 01 00 00 00 00
+    tx 581 [8] 4F 04 20 01 00 00 00 00
+  )");
+}
+
 TEST_F(StoreRestore, CommunicationAndApplicationAreSavedSeparately) {
   EXPECT_TRANSCRIPT(std::string(kChangeValues) + R"(
     rx 601 [8] 23 10 10 03 73 61 76 65   # "save" application only

@@ -72,6 +72,17 @@ void ObjectDictionary::restoreRow(const SubEntry& row) noexcept {
   }
 }
 
+void ObjectDictionary::restoreDefault(const EntryRef& ref) noexcept {
+  uint8_t* value = ramAddress(ref);
+  if (value == nullptr) {
+    return;
+  }
+  copyDefault(*definition_, ref, value);
+  if (ref.has(kNodeIdRelative)) {
+    storeNative(value, loadNative(value, ref.size()) + nodeId_, ref.size());
+  }
+}
+
 void ObjectDictionary::addNodeId(const SubEntry& row) noexcept {
   const size_t end = row.offset + row.count * storageBytes(row);
   for (size_t offset = row.offset; offset < end; offset += storageBytes(row)) {

@@ -129,11 +129,28 @@ bool holdsNodeIdCobId(const od::ObjectDictionary& dictionary, uint16_t id) noexc
   return false;
 }
 
-/// Adds the node-id to the `$NODEID` entries of `group` after a load (see storedForm()).
+/// Gives the loaded entry `ref` its default when the dictionary refuses its value: outside its
+/// limits, or a BOOLEAN above 1. A firmware whose limits were wider may have stored it: the
+/// layout (layoutId) covers the stored entries and their types, not their limits.
+void keepWithinLimits(od::ObjectDictionary& dictionary, const od::EntryRef& ref) noexcept {
+  uint8_t value[8] = {};
+  if ((ref.row->limits == 0U && ref.type() != od::DataType::kBoolean) ||
+      ref.size() > sizeof(value)) {
+    return;
+  }
+  dictionary.readNumber(ref, value);
+  if (dictionary.check(ref, value, ref.size()) != AbortCode::kNone) {
+    dictionary.restoreDefault(ref);
+  }
+}
+
+/// Adds the node-id to the `$NODEID` entries of `group` after a load (see storedForm()), then
+/// keeps each within its limits.
 void addNodeIdAfterLoad(od::ObjectDictionary& dictionary, uint8_t group) noexcept {
   for (od::EntryRef ref; nextInGroup(dictionary.definition(), group, od::kNodeIdRelative, &ref);) {
     if (dictionary.ramAddress(ref) != nullptr) {
       dictionary.storeUnsigned(ref, loadedForm(dictionary, ref, dictionary.readUnsigned(ref)));
+      keepWithinLimits(dictionary, ref);
     }
   }
 }
@@ -323,9 +340,19 @@ StoreResult ParameterStore::load(uint8_t group) noexcept {
   }
   ImageReader reader(storage_, slotOffset(*region, examination.kept),
                      examination.slots[examination.kept].header);
+  // Each value within its limits as it arrives (a `$NODEID` one once it has its node-id); a
+  // copy that fails on the way restores every default of the group below anyway.
+  od::ObjectDictionary& dictionary = dictionary_;
   const bool copied = forEachStoredEntry(
-      dictionary_, group, [&reader](const od::EntryRef& /*ref*/, uint8_t* address, size_t size) {
-        return reader.read(address, size);
+      dictionary, group,
+      [&reader, &dictionary](const od::EntryRef& ref, uint8_t* address, size_t size) {
+        if (!reader.read(address, size)) {
+          return false;
+        }
+        if (!ref.has(od::kNodeIdRelative)) {
+          keepWithinLimits(dictionary, ref);
+        }
+        return true;
       });
   if (copied && reader.matches()) {
     addNodeIdAfterLoad(dictionary_, group);

@@ -162,6 +162,9 @@ class ObjectDictionary {
   void restoreDefaults(uint16_t first, uint16_t last) noexcept;
   /// Copies defaults into every RAM entry of storage group `group`.
   void restoreGroupDefaults(uint8_t group) noexcept;
+  /// Copies its default into one RAM entry (with the node-id for a `$NODEID` entry); nothing for
+  /// a ROM entry or a DOMAIN.
+  void restoreDefault(const EntryRef& ref) noexcept;
 
   /// Address of a RAM entry's value (nullptr for ROM entries and DOMAINs).
   uint8_t* ramAddress(const EntryRef& ref) noexcept;
