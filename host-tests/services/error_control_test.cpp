@@ -92,6 +92,26 @@ TEST_F(ErrorControlTest, AHeartbeatTimeoutRaisesEmcy8130NamingTheProducer) {
   EXPECT_EQ(emcySent(), frames({emcy(0x0000, 0x00)}));
 }
 
+// A timed-out entry given a new value: its EMCY 0x8130 is cleared and the listeners hear that
+// the producer it had found silent is no longer waited for.
+TEST_F(ErrorControlTest, AWithdrawnEntryClearsItsErrorAndTellsTheListeners) {
+  NodeServices& node = operational();
+  monitorNode20(node);
+  clock_.advance(afterMs(100));
+  node.errorControl.process(afterMs(100));
+  EXPECT_EQ(sent(), frames({emcy(0x8130, 0x11, 0x20)}));
+  (void)node.listener.take();
+  const uint8_t node21[4] = {0x64, 0x00, 0x21, 0x00};
+  ASSERT_EQ(node.errorControl.consumerObjects().write(dictionary_, dictionary_.find(0x1016, 1),
+                                                      node21, sizeof(node21)),
+            AbortCode::kNone);
+  node.errorControl.process(afterMs(100));
+  EXPECT_EQ(emcySent(), frames({emcy(0x0000, 0x00)}));
+  EXPECT_EQ(node.listener.take(), (Events{"heartbeat withdrawn 20"}));
+  node.errorControl.process(afterMs(100));
+  EXPECT_TRUE(node.listener.take().empty()) << "once";
+}
+
 // A reset communication that comes between a new value of a timed-out entry and the next
 // process() clears the entry's error as it clears those of timed-out entries; the withdrawal
 // is then not reported again.

@@ -76,6 +76,7 @@ TEST_F(HeartbeatConsumerTest, ANewValueWithdrawsATimedOutEntryOnce) {
   consumer_.configure(false);
   const HeartbeatConsumer::Event withdrawn = consumer_.process(afterMs(200));
   EXPECT_EQ(withdrawn.kind, Kind::kWithdrawn);
+  EXPECT_EQ(withdrawn.nodeId, 0x20U);  // the producer that had timed out, not 0x23
   EXPECT_EQ(withdrawn.entry, 1U);
   EXPECT_EQ(consumer_.process(afterMs(200)).kind, Kind::kNone);
   EXPECT_FALSE(consumer_.monitor(1)->active);

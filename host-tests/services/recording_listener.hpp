@@ -29,6 +29,9 @@ class RecordingListener final : public NodeEvents {
   void onSync(uint8_t counter) noexcept override { add("sync", counter); }
   void onHeartbeatTimeout(uint8_t nodeId) noexcept override { add("heartbeat timeout", nodeId); }
   void onHeartbeatResumed(uint8_t nodeId) noexcept override { add("heartbeat resumed", nodeId); }
+  void onHeartbeatWithdrawn(uint8_t nodeId) noexcept override {
+    add("heartbeat withdrawn", nodeId);
+  }
   void onLifeGuardingExpired() noexcept override { add("life guarding expired"); }
   void onLifeGuardingResumed() noexcept override { add("life guarding resumed"); }
   void onBusOff() noexcept override { add("bus-off"); }

@@ -27,7 +27,7 @@ void ErrorControl::reset(uint8_t nodeId) noexcept {
     }
     for (uint8_t entry = 1; consumer_.monitor(entry) != nullptr; ++entry) {
       const HeartbeatMonitor& monitor = *consumer_.monitor(entry);
-      if (monitor.timedOut || monitor.withdrawn) {
+      if (monitor.timedOut || monitor.withdrawnFrom != 0U) {
         emcy_.clear(kEmcyLifeGuardOrHeartbeat, entry);
       }
     }
@@ -95,14 +95,18 @@ void ErrorControl::onHeartbeatEvent(const HeartbeatConsumer::Event& event) noexc
     onCommunicationError();
   } else if (event.kind != HeartbeatConsumer::EventKind::kNone) {
     // kResumed, or kWithdrawn: the entry's new value starts monitoring over, as reset
-    // communication does (reset()), and the device hears of it no more than of a reset.
+    // communication does (reset()). Either ends the error the entry had found.
     if (profile_.emcyForErrors) {
       emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
     }
-    if (event.kind == HeartbeatConsumer::EventKind::kResumed) {
-      listeners_.notify(
-          [&event](NodeEvents& listener) { listener.onHeartbeatResumed(event.nodeId); });
-    }
+    const bool resumed = event.kind == HeartbeatConsumer::EventKind::kResumed;
+    listeners_.notify([&event, resumed](NodeEvents& listener) {
+      if (resumed) {
+        listener.onHeartbeatResumed(event.nodeId);
+      } else {
+        listener.onHeartbeatWithdrawn(event.nodeId);
+      }
+    });
   }
 }
 

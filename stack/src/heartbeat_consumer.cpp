@@ -21,11 +21,12 @@ void HeartbeatConsumer::configure(bool reset) noexcept {
     const Microseconds time = millisecondsToMicroseconds(value & 0xFFFFU);
     HeartbeatMonitor& monitor = monitors_[count_++];
     if (monitor.nodeId != nodeId || monitor.time != time) {
-      const bool withdrawn = monitor.timedOut || monitor.withdrawn;
+      // Changed twice before process(): the producer that had timed out is still the one.
+      const uint8_t withdrawnFrom = monitor.timedOut ? monitor.nodeId : monitor.withdrawnFrom;
       monitor = HeartbeatMonitor{};  // a changed entry starts over: first heartbeat, then timing
       monitor.nodeId = nodeId;
       monitor.time = time;
-      monitor.withdrawn = withdrawn;
+      monitor.withdrawnFrom = withdrawnFrom;
     }
   }
 }
@@ -58,9 +59,11 @@ HeartbeatConsumer::Event HeartbeatConsumer::onHeartbeat(uint8_t nodeId, uint8_t 
 HeartbeatConsumer::Event HeartbeatConsumer::process(Microseconds now) noexcept {
   for (size_t i = 0; i < count_; ++i) {
     HeartbeatMonitor& monitor = monitors_[i];
-    if (monitor.withdrawn) {
-      monitor.withdrawn = false;
-      return Event{EventKind::kWithdrawn, 0, static_cast<uint8_t>(i + 1U)};
+    if (monitor.withdrawnFrom != 0U) {
+      const Event withdrawn{EventKind::kWithdrawn, monitor.withdrawnFrom,
+                            static_cast<uint8_t>(i + 1U)};
+      monitor.withdrawnFrom = 0;
+      return withdrawn;
     }
     if (monitor.active && !monitor.timedOut && reached(now, monitor.deadline)) {
       monitor.timedOut = true;
@@ -74,7 +77,7 @@ Microseconds HeartbeatConsumer::nextDeadline() const noexcept {
   Microseconds next = kNever;
   for (size_t i = 0; i < count_; ++i) {
     const HeartbeatMonitor& monitor = monitors_[i];
-    if (monitor.withdrawn) {
+    if (monitor.withdrawnFrom != 0U) {
       return atOnce(clock_.now);  // to be reported at once
     }
     if (monitor.active && !monitor.timedOut) {

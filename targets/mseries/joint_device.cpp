@@ -168,7 +168,6 @@ void JointDevice::onResetApplication() noexcept {
   }
   const uint16_t address = values_.x2615_device_location;
   node_.setPendingNodeId(static_cast<uint8_t>(address >= 1U && address <= 127U ? address : 1U));
-  alarms_.clear(kAlarmCommunication);  // the consumer starts over
   zeroStarted_ = false;
   homingByCan_ = false;
   const uint16_t function = values_.x2619_mode_selection;
@@ -185,6 +184,12 @@ void JointDevice::onResetApplication() noexcept {
   apply();
 }
 
+void JointDevice::onResetCommunication() noexcept {
+  // The consumer starts over (CiA 301: from the producer's first heartbeat): the master it had
+  // found silent is no longer waited for, and the joint resumes (errata W7).
+  communicationRestored();
+}
+
 void JointDevice::onHeartbeatTimeout(uint8_t nodeId) noexcept {
   (void)nodeId;
   alarms_.raise(kAlarmCommunication);  // "Motor stops" (line 131)
@@ -193,7 +198,16 @@ void JointDevice::onHeartbeatTimeout(uint8_t nodeId) noexcept {
 
 void JointDevice::onHeartbeatResumed(uint8_t nodeId) noexcept {
   (void)nodeId;
-  alarms_.clear(kAlarmCommunication);  // "Resend the heartbeat packet to recover" (131, 764)
+  communicationRestored();  // "Resend the heartbeat packet to recover" (131, 764)
+}
+
+void JointDevice::onHeartbeatWithdrawn(uint8_t nodeId) noexcept {
+  (void)nodeId;
+  communicationRestored();  // the entry no longer waits for that master (errata W7)
+}
+
+void JointDevice::communicationRestored() noexcept {
+  alarms_.clear(kAlarmCommunication);
   drive_.hold(false);
 }
 

@@ -63,8 +63,10 @@ class JointDevice : public ObjectHook, public NodeEvents, public cia402::Axis {
                   size_t length) noexcept override;
   // NodeEvents.
   void onResetApplication() noexcept override;
+  void onResetCommunication() noexcept override;
   void onHeartbeatTimeout(uint8_t nodeId) noexcept override;
   void onHeartbeatResumed(uint8_t nodeId) noexcept override;
+  void onHeartbeatWithdrawn(uint8_t nodeId) noexcept override;
   // cia402::Axis.
   void command(const cia402::AxisCommand& command) noexcept override;
   cia402::AxisState state() const noexcept override;
@@ -77,6 +79,10 @@ class JointDevice : public ObjectHook, public NodeEvents, public cia402::Axis {
   void publish(const JointFeedback& feedback) noexcept;
   uint32_t homingSpeed() const noexcept;
   AbortCode save() noexcept;
+  /// The master is no longer silent (0x1016 has one entry): its heartbeat is back, the entry
+  /// has a new value, or the consumer started over. The communication alarm ends and the
+  /// joint resumes its mode.
+  void communicationRestored() noexcept;
   AbortCode writeGearNumerator(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                                const uint8_t* data, size_t length) noexcept;
 

@@ -18,8 +18,9 @@ struct HeartbeatMonitor {
   Microseconds time = 0;  ///< 0: entry disabled
   bool active = false;    ///< a heartbeat has been received since configuration
   bool timedOut = false;
-  /// The entry had timed out, then got a new value: the error it found is to be cleared.
-  bool withdrawn = false;
+  /// The producer of an entry that had timed out, then got a new value: the error it found is
+  /// to be cleared (a kWithdrawn event). 0: none (node-id 0 is never a producer's).
+  uint8_t withdrawnFrom = 0;
   Microseconds deadline = kNever;
   uint8_t lastState = 0;
 };
@@ -32,7 +33,7 @@ class HeartbeatConsumer : public ObjectHook {
   enum class EventKind : uint8_t { kNone, kTimeout, kResumed, kWithdrawn };
   struct Event {
     EventKind kind = EventKind::kNone;
-    uint8_t nodeId = 0;  ///< the producer (0 for kWithdrawn: the entry has a new one)
+    uint8_t nodeId = 0;  ///< the producer (for kWithdrawn: the one the entry monitored before)
     uint8_t entry = 0;   ///< sub-index of 0x1016
   };
 

@@ -55,6 +55,10 @@ class NodeEvents {
   /// A monitored heartbeat (0x1016) stopped arriving / arrived again after a timeout.
   virtual void onHeartbeatTimeout(uint8_t nodeId) noexcept { (void)nodeId; }
   virtual void onHeartbeatResumed(uint8_t nodeId) noexcept { (void)nodeId; }
+  /// The 0x1016 entry that had found `nodeId`'s heartbeat timed out got a new value: that error
+  /// ends without the heartbeat, and monitoring starts over, as at reset communication (which
+  /// ends every such error without this call: onResetCommunication).
+  virtual void onHeartbeatWithdrawn(uint8_t nodeId) noexcept { (void)nodeId; }
   /// Life guarding: no node-guarding request within guard time x life time factor / requests
   /// arriving again.
   virtual void onLifeGuardingExpired() noexcept {}
