@@ -48,13 +48,7 @@ inline void fillGroup(od::ObjectDictionary& dictionary, uint8_t group, unsigned 
     for (size_t k = 0; k < ref.size(); ++k, ++j) {
       address[k] = static_cast<uint8_t>(seed * 31U + j * 7U + 1U);
     }
-    uint8_t wire[8] = {};
-    if (ref.size() <= sizeof(wire)) {
-      dictionary.readNumber(ref, wire);
-      if (dictionary.check(ref, wire, ref.size()) != AbortCode::kNone) {
-        dictionary.restoreDefault(ref);
-      }
-    }
+    (void)dictionary.restoreDefaultIfRefused(ref);
   }
 }
 

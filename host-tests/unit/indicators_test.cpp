@@ -127,6 +127,34 @@ TEST_F(IndicatorsTest, AHeartbeatTimeoutDoubleFlashesErrorUntilItsProducerReturn
   EXPECT_EQ(indicators_.error(), IndicatorState::kOff);
 }
 
+// The entry that timed out gets a new value: its error control event ends with it, and a
+// timeout of the new producer is one event again, ended by that producer's return.
+TEST_F(IndicatorsTest, ANewValueOfATimedOutEntryEndsItsErrorControlEvent) {
+  frames(R"(
+    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5 within 100 ms
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    rx 705 [1] 05
+  )");
+  begin();
+  bus_.advance(100000);
+  frames("tx 081 [8] 30 81 11 05 00 00 00 00");
+  EXPECT_EQ(indicators_.error(), IndicatorState::kDoubleFlash);
+  frames(R"(
+    rx 601 [8] 23 16 10 01 64 00 06 00   # node 6 instead
+    tx 581 [8] 60 16 10 01 00 00 00 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # the error is gone with the old value
+  )");
+  step();
+  EXPECT_EQ(indicators_.error(), IndicatorState::kOff);
+  frames("rx 706 [1] 05");
+  bus_.advance(100000);
+  frames("tx 081 [8] 30 81 11 06 00 00 00 00");
+  EXPECT_EQ(indicators_.error(), IndicatorState::kDoubleFlash);
+  frames("rx 706 [1] 05\ntx 081 [8] 00 00 00 00 00 00 00 00");
+  step();
+  EXPECT_EQ(indicators_.error(), IndicatorState::kOff);
+}
+
 TEST_F(IndicatorsTest, BusOffLightsErrorAboveEverythingElse) {
   bus_.node().onControllerEvent(CanControllerEvent::kErrorPassive, bus_.now());
   step();

@@ -49,6 +49,26 @@ TEST_F(JointWire, HeartbeatCarries04WhileAnAlarmIsActive) {
   EXPECT_EQ(bus_.node().state(), NmtState::kOperational);
 }
 
+// Reset node ends the communication alarm as reset communication does (the transcript
+// heartbeat-consumer-starts-over): the consumer starts over, the drive no longer holds.
+TEST_F(JointWire, ResetNodeEndsTheCommunicationAlarm) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 77F [1] 05                        # the master's first heartbeat: monitoring starts
+    wait 1000
+    tx 701 [1] 05
+    wait 1000
+    tx 701 [1] 05                        # 2000 ms: the master has been silent that long
+    rx 601 [8] 40 0E 26 00 00 00 00 00
+    tx 581 [8] 4B 0E 26 00 20 00 00 00   # 0x20: communication drop
+    rx 000 [2] 81 01                     # reset node
+    tx 701 [1] 00
+    rx 601 [8] 40 0E 26 00 00 00 00 00
+    tx 581 [8] 4B 0E 26 00 00 00 00 00
+    wait 1000
+    tx 701 [1] 05                        # 05: no alarm
+  )");
+}
+
 TEST_F(JointWire, NoNodeGuardingNoRemoteRequests) {
   EXPECT_TRANSCRIPT(R"(
     rx 701 [0] RTR                       # node guarding

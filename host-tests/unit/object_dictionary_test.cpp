@@ -144,6 +144,48 @@ TEST_F(ObjectDictionaryTest, RestoresRangesAndGroups) {
   EXPECT_EQ(values_.x2000_setpoint, 1000U);
 }
 
+// One entry back to its default: an element of an array (its neighbours untouched), a `$NODEID`
+// one with the node-id, a string with its terminator; ROM entries and DOMAINs have none.
+TEST_F(ObjectDictionaryTest, RestoresOneEntry) {
+  values_.x2005_table.item[2] = 7;
+  values_.x2005_table.item[3] = 7;
+  dictionary_.restoreDefault(dictionary_.find(0x2005, 4));  // sub-index 4: item[3]
+  EXPECT_EQ(values_.x2005_table.item[3], 0x1234U);
+  EXPECT_EQ(values_.x2005_table.item[2], 7U);
+  ASSERT_TRUE(dictionary_.storeUnsigned(0x1014, 0, 0x99));
+  dictionary_.restoreDefault(dictionary_.find(0x1014, 0));
+  EXPECT_EQ(dictionary_.readUnsigned(0x1014, 0, 0), 0x85U);  // $NODEID+0x80, node-id 5
+  const uint8_t text[9] = {'l', 'o', 'n', 'g', 'e', 'r', 'o', 'n', 'e'};
+  const EntryRef label = dictionary_.find(0x2006, 0);
+  ASSERT_EQ(dictionary_.write(label, text, sizeof(text)), AbortCode::kNone);
+  dictionary_.restoreDefault(label);
+  EXPECT_STREQ(values_.x2006_device_label, "unnamed");
+  EXPECT_EQ(dictionary_.valueSize(label), 7U);
+  dictionary_.restoreDefault(dictionary_.find(0x1008, 0));  // ROM: nothing to do
+  dictionary_.restoreDefault(dictionary_.find(0x2008, 0));  // DOMAIN: nothing to do
+  EXPECT_EQ(dictionary_.valueSize(dictionary_.find(0x1008, 0)), 13U);
+}
+
+// A value the dictionary would refuse, put in RAM by other means (a load), gets its default;
+// one it takes stays, and entries without limits are not judged.
+TEST_F(ObjectDictionaryTest, RestoresADefaultOnlyWhereTheValueIsRefused) {
+  values_.x2000_setpoint = 100001;  // 10..100000
+  EXPECT_TRUE(dictionary_.restoreDefaultIfRefused(dictionary_.find(0x2000, 0)));
+  EXPECT_EQ(values_.x2000_setpoint, 1000U);
+  values_.x2000_setpoint = 100000;
+  EXPECT_FALSE(dictionary_.restoreDefaultIfRefused(dictionary_.find(0x2000, 0)));
+  EXPECT_EQ(values_.x2000_setpoint, 100000U);
+  values_.x2004_mixed_record.offset = -101;  // INTEGER8 -100..100
+  EXPECT_TRUE(dictionary_.restoreDefaultIfRefused(dictionary_.find(0x2004, 2)));
+  EXPECT_EQ(values_.x2004_mixed_record.offset, -5);
+  ASSERT_TRUE(dictionary_.storeUnsigned(0x2004, 1, 2));  // BOOLEAN
+  EXPECT_TRUE(dictionary_.restoreDefaultIfRefused(dictionary_.find(0x2004, 1)));
+  EXPECT_EQ(dictionary_.readUnsigned(0x2004, 1, 9), 0U);
+  ASSERT_TRUE(dictionary_.storeUnsigned(0x1014, 0, 0xFFFFFFFFU));  // no limits
+  EXPECT_FALSE(dictionary_.restoreDefaultIfRefused(dictionary_.find(0x1014, 0)));
+  EXPECT_FALSE(dictionary_.restoreDefaultIfRefused(dictionary_.find(0x1008, 0)));  // ROM
+}
+
 TEST_F(ObjectDictionaryTest, AttributesFollowTheAccessTypes) {
   const auto attributes = [&](uint16_t index, uint8_t sub) {
     return dictionary_.find(index, sub).attributes();

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "slave_options.hpp"
+#include "slave_runner.hpp"
 
 namespace costa::host {
 namespace {
@@ -84,6 +85,31 @@ TEST(SlaveOptions, SdoTimeoutInMilliseconds) {
   EXPECT_FALSE(parse({"example", "--sdo-timeout"}, &options, &error));
   EXPECT_EQ(error, "--sdo-timeout needs a value");
   EXPECT_NE(slaveUsage().find("--sdo-timeout MS"), std::string::npos);
+}
+
+class NoBitRate final : public CanBitRateControl {};
+
+// What each node is created with: the command line's node-id, storage, SDO timeout, and a
+// serial number of its own when there are several.
+TEST(SlaveOptions, EachNodeIsCreatedWithWhatTheCommandLineGives) {
+  SlaveOptions options;
+  std::string error;
+  NoBitRate bitRate;
+  ASSERT_TRUE(parse({"--sdo-timeout", "2500", "--storage", "/tmp/d", "example@3", "gra@0x10"},
+                    &options, &error))
+      << error;
+  const TargetOptions second = nodeTargetOptions(options, 1, bitRate);
+  EXPECT_EQ(second.nodeId, 0x10);
+  EXPECT_EQ(second.storagePath, "/tmp/d/gra-2.bin");
+  EXPECT_EQ(second.sdoTimeout, 2500000U);
+  EXPECT_EQ(second.serialNumber, 2U);
+  EXPECT_EQ(second.bitRate, &bitRate);
+  ASSERT_TRUE(parse({"example"}, &options, &error)) << error;
+  const TargetOptions only = nodeTargetOptions(options, 0, bitRate);
+  EXPECT_EQ(only.nodeId, -1);
+  EXPECT_EQ(only.storagePath, "");
+  EXPECT_EQ(only.sdoTimeout, 0U);  // the device's own
+  EXPECT_EQ(only.serialNumber, 0U);
 }
 
 TEST(SlaveOptions, RefusesANodeIdTheDeviceDoesNotTake) {

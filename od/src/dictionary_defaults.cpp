@@ -83,6 +83,20 @@ void ObjectDictionary::restoreDefault(const EntryRef& ref) noexcept {
   }
 }
 
+bool ObjectDictionary::restoreDefaultIfRefused(const EntryRef& ref) noexcept {
+  uint8_t value[8] = {};
+  if ((ref.row->limits == 0U && ref.type() != DataType::kBoolean) || ref.size() > sizeof(value) ||
+      ramAddress(ref) == nullptr) {
+    return false;
+  }
+  readNumber(ref, value);
+  if (check(ref, value, ref.size()) == AbortCode::kNone) {
+    return false;
+  }
+  restoreDefault(ref);
+  return true;
+}
+
 void ObjectDictionary::addNodeId(const SubEntry& row) noexcept {
   const size_t end = row.offset + row.count * storageBytes(row);
   for (size_t offset = row.offset; offset < end; offset += storageBytes(row)) {

@@ -144,4 +144,8 @@ void Indicators::onHeartbeatResumed(uint8_t nodeId) noexcept {
   }
 }
 
+void Indicators::onHeartbeatWithdrawn(uint8_t nodeId) noexcept {
+  onHeartbeatResumed(nodeId);  // the entry's error ends as if its producer had returned
+}
+
 }  // namespace costa

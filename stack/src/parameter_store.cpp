@@ -129,28 +129,13 @@ bool holdsNodeIdCobId(const od::ObjectDictionary& dictionary, uint16_t id) noexc
   return false;
 }
 
-/// Gives the loaded entry `ref` its default when the dictionary refuses its value: outside its
-/// limits, or a BOOLEAN above 1. A firmware whose limits were wider may have stored it: the
-/// layout (layoutId) covers the stored entries and their types, not their limits.
-void keepWithinLimits(od::ObjectDictionary& dictionary, const od::EntryRef& ref) noexcept {
-  uint8_t value[8] = {};
-  if ((ref.row->limits == 0U && ref.type() != od::DataType::kBoolean) ||
-      ref.size() > sizeof(value)) {
-    return;
-  }
-  dictionary.readNumber(ref, value);
-  if (dictionary.check(ref, value, ref.size()) != AbortCode::kNone) {
-    dictionary.restoreDefault(ref);
-  }
-}
-
 /// Adds the node-id to the `$NODEID` entries of `group` after a load (see storedForm()), then
-/// keeps each within its limits.
+/// gives each its default if the dictionary refuses it (see load()).
 void addNodeIdAfterLoad(od::ObjectDictionary& dictionary, uint8_t group) noexcept {
   for (od::EntryRef ref; nextInGroup(dictionary.definition(), group, od::kNodeIdRelative, &ref);) {
     if (dictionary.ramAddress(ref) != nullptr) {
       dictionary.storeUnsigned(ref, loadedForm(dictionary, ref, dictionary.readUnsigned(ref)));
-      keepWithinLimits(dictionary, ref);
+      dictionary.restoreDefaultIfRefused(ref);
     }
   }
 }
@@ -340,8 +325,8 @@ StoreResult ParameterStore::load(uint8_t group) noexcept {
   }
   ImageReader reader(storage_, slotOffset(*region, examination.kept),
                      examination.slots[examination.kept].header);
-  // Each value within its limits as it arrives (a `$NODEID` one once it has its node-id); a
-  // copy that fails on the way restores every default of the group below anyway.
+  // A refused value gets its default as it arrives (a `$NODEID` one once it has its node-id);
+  // a copy that fails on the way restores every default of the group anyway.
   od::ObjectDictionary& dictionary = dictionary_;
   const bool copied = forEachStoredEntry(
       dictionary, group,
@@ -350,7 +335,7 @@ StoreResult ParameterStore::load(uint8_t group) noexcept {
           return false;
         }
         if (!ref.has(od::kNodeIdRelative)) {
-          keepWithinLimits(dictionary, ref);
+          dictionary.restoreDefaultIfRefused(ref);
         }
         return true;
       });

@@ -134,14 +134,9 @@ bool createNodes(const SlaveOptions& options, LocalBus& bus, CanBitRateControl& 
     }
   }
   for (size_t i = 0; i < options.nodes.size(); ++i) {
-    TargetOptions targetOptions;
-    targetOptions.nodeId = options.nodes[i].nodeId;
-    targetOptions.storagePath = nodeStoragePath(options, i);
-    targetOptions.bitRate = &bitRate;
-    targetOptions.sdoTimeout = millisecondsToMicroseconds(options.sdoTimeoutMs);
-    targetOptions.serialNumber = several ? static_cast<uint32_t>(i + 1U) : 0U;
     std::unique_ptr<DeviceTarget> target =
-        createDevice(*findDevice(options.nodes[i].device), bus.nextPort(), targetOptions, error);
+        createDevice(*findDevice(options.nodes[i].device), bus.nextPort(),
+                     nodeTargetOptions(options, i, bitRate), error);
     if (!target) {
       return false;
     }
@@ -190,6 +185,17 @@ std::string describeNodes(const SlaveOptions& options, LocalBus& bus) {
 }
 
 }  // namespace
+
+TargetOptions nodeTargetOptions(const SlaveOptions& options, size_t index,
+                                CanBitRateControl& bitRate) {
+  TargetOptions targetOptions;
+  targetOptions.nodeId = options.nodes[index].nodeId;
+  targetOptions.storagePath = nodeStoragePath(options, index);
+  targetOptions.bitRate = &bitRate;
+  targetOptions.sdoTimeout = millisecondsToMicroseconds(options.sdoTimeoutMs);
+  targetOptions.serialNumber = options.nodes.size() > 1U ? static_cast<uint32_t>(index + 1U) : 0U;
+  return targetOptions;
+}
 
 int runSlave(const SlaveOptions& options) {
   port::SocketCanPort socket;

@@ -8,7 +8,8 @@
 //   0x15 over-voltage         a fault while the supply is above 52 V; cleared like 0x12 once
 //                             it is not
 //   0x20 communication drop   the heartbeat of 0x1016's producer stopped: the motor stops and
-//                             holds until it returns (not a fault)
+//                             holds until it returns, reset communication or a new 0x1016:01
+//                             (not a fault)
 #pragma once
 
 #include <stdint.h>

@@ -10,7 +10,8 @@
 //   0x2619  power-on functions 6 (back to the multi-turn zero), 9 (CANopen control), 30..32768
 //           (to that position) (B12)
 //   0x6098  homing method: 20 refused (D9)
-//   heartbeat of 0x1016's producer lost / back: alarm 0x20, the drive holds / resumes (W7)
+//   heartbeat of 0x1016's producer lost / back (or no longer waited for: reset communication,
+//   a new 0x1016:01): alarm 0x20, the drive holds / resumes (W7)
 #pragma once
 
 #include "costa/cia402/drive.hpp"

@@ -65,6 +65,7 @@ class Indicators final : public NodeEvents {
   void onResetCommunication() noexcept override;
   void onHeartbeatTimeout(uint8_t nodeId) noexcept override;
   void onHeartbeatResumed(uint8_t nodeId) noexcept override;
+  void onHeartbeatWithdrawn(uint8_t nodeId) noexcept override;
   void onLifeGuardingExpired() noexcept override { lifeGuardingExpired_ = true; }
   void onLifeGuardingResumed() noexcept override { lifeGuardingExpired_ = false; }
 

@@ -56,8 +56,8 @@ struct NodeSettings {
   bool automaticStart = false;
 };
 
-/// What the integrator gives a device composition at construction: the same four things for
-/// every device (costa-slave's --node-id and --storage, a firmware's board).
+/// What the integrator gives a device composition at construction: the same things for every
+/// device (costa-slave's --node-id, --storage and --sdo-timeout, a firmware's board).
 struct DeviceConfig {
   /// The node-id when `nodeIdGiven`: 1..127, or 0xFF to start without one (LSS). Otherwise the
   /// device's own (its settings' nodeId), replaced by a node-id it stored.
@@ -69,7 +69,7 @@ struct DeviceConfig {
   /// The CAN controller to re-time on a bit rate change, or null.
   CanBitRateControl* bitRateControl = nullptr;
   /// How long the SDO server waits for the client within a transfer (costa-slave
-  /// --sdo-timeout), or 0: the device's own (NodeSettings::sdoTimeout).
+  /// --sdo-timeout), at most kLongestDelay, or 0: the device's own (NodeSettings::sdoTimeout).
   Microseconds sdoTimeout = 0;
 };
 

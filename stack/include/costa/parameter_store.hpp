@@ -74,6 +74,9 @@ class ParameterStore {
   /// Copies the newest intact image of the group into the dictionary. Anything but kOk leaves
   /// the group's values as they were, except when the medium fails or changes during the copy
   /// (kMediumError, kCorrupt): then the group's defaults are restored rather than leave a mix.
+  /// A copied value the dictionary refuses (outside its limits, a BOOLEAN above 1) gets its
+  /// entry's default, and the load is still kOk: a firmware whose limits were wider may have
+  /// stored it (the layout, layoutId, covers the stored entries and their types, not limits).
   [[nodiscard]] StoreResult load(uint8_t group) noexcept;
   /// Saves every group of `groups` (bit g for group g, see groupBit()) that the store holds,
   /// one after the other by ascending number, each on its own: a power loss in the middle

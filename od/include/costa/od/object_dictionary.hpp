@@ -165,6 +165,11 @@ class ObjectDictionary {
   /// Copies its default into one RAM entry (with the node-id for a `$NODEID` entry); nothing for
   /// a ROM entry or a DOMAIN.
   void restoreDefault(const EntryRef& ref) noexcept;
+  /// restoreDefault() when check() refuses the value the RAM entry holds: outside its limits, or
+  /// a BOOLEAN above 1 (entries without limits are not read). Returns true when it did. The
+  /// default itself is not checked (the generator warns of a `$NODEID` default that leaves the
+  /// limits for some node-ids).
+  bool restoreDefaultIfRefused(const EntryRef& ref) noexcept;
 
   /// Address of a RAM entry's value (nullptr for ROM entries and DOMAINs).
   uint8_t* ramAddress(const EntryRef& ref) noexcept;
