@@ -23,6 +23,18 @@ class ErrorControlTest : public NodeServicesTest {
     node.errorControl.reset(kNodeId);
     EXPECT_TRUE(node.errorControl.onFrame(frame(0x720, {0x05}), kNodeId));
   }
+  /// Node 0x20 times out (EMCY 0x8130), then 0x1016:01 is written to monitor node 0x21.
+  void timeOutThenMoveTo21(NodeServices& node) {
+    monitorNode20(node);
+    clock_.advance(afterMs(100));
+    node.errorControl.process(afterMs(100));
+    EXPECT_EQ(sent(), frames({emcy(0x8130, 0x11, 0x20)}));
+    (void)node.listener.take();
+    const uint8_t node21[4] = {0x64, 0x00, 0x21, 0x00};
+    ASSERT_EQ(node.errorControl.consumerObjects().write(dictionary_, dictionary_.find(0x1016, 1),
+                                                        node21, sizeof(node21)),
+              AbortCode::kNone);
+  }
   static CanFrame emcy(uint16_t code, uint8_t errorRegister, uint8_t byte3 = 0) {
     return frame8(
         0x85, {static_cast<uint8_t>(code), static_cast<uint8_t>(code >> 8U), errorRegister, byte3});
@@ -96,15 +108,7 @@ TEST_F(ErrorControlTest, AHeartbeatTimeoutRaisesEmcy8130NamingTheProducer) {
 // the producer it had found silent is no longer waited for.
 TEST_F(ErrorControlTest, AWithdrawnEntryClearsItsErrorAndTellsTheListeners) {
   NodeServices& node = operational();
-  monitorNode20(node);
-  clock_.advance(afterMs(100));
-  node.errorControl.process(afterMs(100));
-  EXPECT_EQ(sent(), frames({emcy(0x8130, 0x11, 0x20)}));
-  (void)node.listener.take();
-  const uint8_t node21[4] = {0x64, 0x00, 0x21, 0x00};
-  ASSERT_EQ(node.errorControl.consumerObjects().write(dictionary_, dictionary_.find(0x1016, 1),
-                                                      node21, sizeof(node21)),
-            AbortCode::kNone);
+  timeOutThenMoveTo21(node);
   node.errorControl.process(afterMs(100));
   EXPECT_EQ(emcySent(), frames({emcy(0x0000, 0x00)}));
   EXPECT_EQ(node.listener.take(), (Events{"heartbeat withdrawn 20"}));
@@ -117,15 +121,7 @@ TEST_F(ErrorControlTest, AWithdrawnEntryClearsItsErrorAndTellsTheListeners) {
 // is then not reported again.
 TEST_F(ErrorControlTest, AResetBeforeAWithdrawalIsReportedClearsItsError) {
   NodeServices& node = operational();
-  monitorNode20(node);
-  clock_.advance(afterMs(100));
-  node.errorControl.process(afterMs(100));
-  EXPECT_EQ(sent(), frames({emcy(0x8130, 0x11, 0x20)}));
-  (void)node.listener.take();
-  const uint8_t node21[4] = {0x64, 0x00, 0x21, 0x00};
-  ASSERT_EQ(node.errorControl.consumerObjects().write(dictionary_, dictionary_.find(0x1016, 1),
-                                                      node21, sizeof(node21)),
-            AbortCode::kNone);
+  timeOutThenMoveTo21(node);
   node.errorControl.reset(kNodeId);
   EXPECT_EQ(emcySent(), frames({emcy(0x0000, 0x00)}));
   node.errorControl.process(afterMs(100));

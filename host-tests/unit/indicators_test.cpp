@@ -103,12 +103,15 @@ TEST_F(IndicatorsTest, OperationalIsOnAndStoppedFlashesOnce) {
   EXPECT_EQ(run(2500), (Edges{"R0@700", "R1@1700", "R0@1900", "R1@2900"}));
 }
 
-TEST_F(IndicatorsTest, AHeartbeatTimeoutDoubleFlashesErrorUntilItsProducerReturns) {
-  frames(R"(
-    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5 within 100 ms
+/// 0x1016:01 monitors node 5 within 100 ms, and node 5's first heartbeat arrives.
+constexpr const char* kNode5Within100ms = R"(
+    rx 601 [8] 23 16 10 01 64 00 05 00
     tx 581 [8] 60 16 10 01 00 00 00 00
     rx 705 [1] 05
-  )");
+)";
+
+TEST_F(IndicatorsTest, AHeartbeatTimeoutDoubleFlashesErrorUntilItsProducerReturns) {
+  frames(kNode5Within100ms);
   begin();
   run(99);
   EXPECT_EQ(indicators_.error(), IndicatorState::kOff);
@@ -130,11 +133,7 @@ TEST_F(IndicatorsTest, AHeartbeatTimeoutDoubleFlashesErrorUntilItsProducerReturn
 // The entry that timed out gets a new value: its error control event ends with it, and a
 // timeout of the new producer is one event again, ended by that producer's return.
 TEST_F(IndicatorsTest, ANewValueOfATimedOutEntryEndsItsErrorControlEvent) {
-  frames(R"(
-    rx 601 [8] 23 16 10 01 64 00 05 00   # node 5 within 100 ms
-    tx 581 [8] 60 16 10 01 00 00 00 00
-    rx 705 [1] 05
-  )");
+  frames(kNode5Within100ms);
   begin();
   bus_.advance(100000);
   frames("tx 081 [8] 30 81 11 05 00 00 00 00");
