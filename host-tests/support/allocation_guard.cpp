@@ -51,6 +51,12 @@ NoAllocationScope::~NoAllocationScope() {
   }
 }
 
+AllocationAllowedScope::AllocationAllowedScope() : depth_(scopeDepth.exchange(0)) {}
+
+AllocationAllowedScope::~AllocationAllowedScope() {
+  scopeDepth.store(depth_);
+}
+
 size_t forbiddenAllocations() {
   return violations.load();
 }

@@ -19,6 +19,19 @@ class NoAllocationScope {
   size_t violationsAtStart_;
 };
 
+/// While alive, inside a NoAllocationScope, allocations are allowed again: for a port the stack
+/// calls that is not part of it and may allocate (the Linux FileStorage's commit).
+class AllocationAllowedScope {
+ public:
+  AllocationAllowedScope();
+  ~AllocationAllowedScope();
+  AllocationAllowedScope(const AllocationAllowedScope&) = delete;
+  AllocationAllowedScope& operator=(const AllocationAllowedScope&) = delete;
+
+ private:
+  int depth_;
+};
+
 /// Allocations made inside a NoAllocationScope since the program started.
 size_t forbiddenAllocations();
 

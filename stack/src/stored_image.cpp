@@ -137,9 +137,16 @@ bool ImageWriter::finish() noexcept {
   }
   storeU32(header_ + kImageCrcOffset, crc_.value());
   // Everything but the magic first: the slot stays blank until the last byte of the magic.
-  ok_ = storage_.write(slotOffset_ + kImageMagicSize, header_ + kImageMagicSize,
-                       kImageHeaderSize - kImageMagicSize) &&
-        storage_.write(slotOffset_, header_, kImageMagicSize) && storage_.commit();
+  const bool written = storage_.write(slotOffset_ + kImageMagicSize, header_ + kImageMagicSize,
+                                      kImageHeaderSize - kImageMagicSize) &&
+                       storage_.write(slotOffset_, header_, kImageMagicSize);
+  ok_ = written && storage_.commit();
+  if (written && !ok_) {
+    // The medium took the image but cannot make it durable (a file that cannot be replaced):
+    // the save that failed is withdrawn, so that the slot kept before stays the one a load
+    // reads, now and after the next commit that succeeds.
+    (void)storage_.erase(slotOffset_, slotSize_);
+  }
   return ok_;
 }
 

@@ -74,7 +74,8 @@ class ImageWriter {
   /// Erases the slot. `header.payloadLength` must be exactly what append() will pass.
   bool begin(const ImageHeader& header) noexcept;
   bool append(const uint8_t* data, size_t length) noexcept;
-  /// Flushes the payload, writes the header and the magic, commits.
+  /// Flushes the payload, writes the header and the magic, commits. When the commit fails the
+  /// slot is erased again (not committed): the failed save leaves the previous image kept.
   bool finish() noexcept;
 
  private:
