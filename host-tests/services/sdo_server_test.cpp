@@ -96,6 +96,16 @@ TEST_F(SdoServerTest, ExpeditedDownloadWritesTheValueAndEchoesTheMultiplexer) {
   EXPECT_EQ(value(0x2001, 1), 0x5678U);
 }
 
+// Size not indicated (0x22) to an OCTET_STRING of 2 bytes: its own size, as for a number.
+TEST_F(SdoServerTest, AnExpeditedDownloadWithoutSizeFillsAShortOctetString) {
+  request({0x22, 0x09, 0x20, 0x00, 0xAB, 0xCD, 0xEE, 0xFF});
+  EXPECT_EQ(sent(), frames({response({0x60, 0x09, 0x20, 0x00})}));
+  uint8_t key[2] = {};
+  EXPECT_EQ(dictionary_.read(dictionary_.find(0x2009, 0), 0, key, sizeof(key)), 2U);
+  EXPECT_EQ(key[0], 0xABU);
+  EXPECT_EQ(key[1], 0xCDU);
+}
+
 TEST_F(SdoServerTest, AccessesToMissingOrForbiddenEntriesAbortNamingTheEntry) {
   request({0x40, 0x00, 0x30, 0x00});                 // no object
   request({0x40, 0x00, 0x20, 0x09});                 // no sub-index

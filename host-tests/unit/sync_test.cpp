@@ -32,6 +32,25 @@ TEST_F(Sync, ALengthThatDoesNotMatchTheCounterSettingRaisesEmcy8240) {
   )");
 }
 
+// The length error belonged to the old 0x1019 value: a write of 0x1019 ends it, and so does
+// reset communication, without a SYNC of the right length (the master may have stopped SYNC).
+TEST_F(Sync, ALengthErrorEndsWithANew1019OrResetCommunication) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 080 [1] 05                        # counter byte, but 0x1019 = 0
+    tx 081 [8] 40 82 11 00 00 00 00 00
+    rx 601 [8] 2F 19 10 00 04 00 00 00   # now with a counter: the error is gone
+    tx 581 [8] 60 19 10 00 00 00 00 00
+    tx 081 [8] 00 00 00 00 00 00 00 00
+    rx 080 [0]                           # without one
+    tx 081 [8] 40 82 11 00 00 00 00 00
+    rx 000 [2] 82 01                     # reset communication
+    tx 701 [1] 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # the error reset, once the boot-up is out
+    rx 601 [8] 40 01 10 00 00 00 00 00
+    tx 581 [8] 4F 01 10 00 00 00 00 00   # no error left
+  )");
+}
+
 TEST_F(Sync, CounterSettingExpectsOneByte) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 19 10 00 04 00 00 00
@@ -57,6 +76,30 @@ TEST_F(Sync, ProducerSendsEveryPeriodWithItsCounter) {
     rx 000 [2] 02 01                     # stopped: no SYNC production
     wait 50
     silence
+  )");
+}
+
+// A new window (0x1007) changes nothing of the cycle: the next SYNC comes on time with the next
+// counter. A new period (0x1006) counts from the write, the counter going on.
+TEST_F(Sync, NewParametersKeepTheCounterGoing) {
+  EXPECT_TRANSCRIPT(kProducerCounting1To3Every10ms);
+  EXPECT_TRANSCRIPT(R"(
+    wait 10
+    tx 080 [1] 01
+    wait 5
+    rx 601 [8] 23 07 10 00 E8 03 00 00   # window 1 ms
+    tx 581 [8] 60 07 10 00 00 00 00 00
+    wait 5
+    tx 080 [1] 02                        # 20 ms: on time
+    wait 5
+    rx 601 [8] 23 06 10 00 20 4E 00 00   # period 20 ms from here
+    tx 581 [8] 60 06 10 00 00 00 00 00
+    wait 19
+    silence
+    wait 1
+    tx 080 [1] 03                        # the counter goes on
+    wait 20
+    tx 080 [1] 01
   )");
 }
 

@@ -225,12 +225,38 @@ TEST_F(Tpdo, RemoteRequestsNeedTheCobIdAndTheTypeToAllowThem) {
   )");
 }
 
+// CiA 301: the inhibit time is the least interval between transmissions of an event-driven
+// TPDO, an answer to a remote request too: within it the answer waits for its end.
+TEST_F(Tpdo, ARemoteRequestWithinTheInhibitTimeIsAnsweredWhenItEnds) {
+  EXPECT_TRANSCRIPT(kTpdo1Inhibit50ms);
+  EXPECT_TRANSCRIPT(R"(
+    rx 181 [0] RTR
+    tx 181 [6] 00 00 00 00 D7 00         # answered at once; inhibited for 50 ms
+    wait 10
+    rx 181 [0] RTR
+    silence
+    wait 39
+    silence
+    wait 1
+    tx 181 [6] 00 00 00 00 D7 00         # 50 ms: the answer
+    wait 50
+    rx 181 [0] RTR                       # the inhibit time is over: at once
+    tx 181 [6] 00 00 00 00 D7 00
+  )");
+}
+
 TEST_F(Tpdo, SyncStartValueDelaysTheFirstTransmission) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 19 10 00 0A 00 00 00   # SYNC counter overflow 10
     tx 581 [8] 60 19 10 00 00 00 00 00
     rx 601 [8] 2F 02 18 02 02 00 00 00   # TPDO3 every 2nd SYNC
     tx 581 [8] 60 02 18 02 00 00 00 00
+    rx 601 [8] 2F 02 18 06 F1 00 00 00   # 241..255 are reserved (CiA 301)
+    tx 581 [8] 80 02 18 06 30 00 09 06
+    rx 601 [8] 2F 02 18 06 FF 00 00 00
+    tx 581 [8] 80 02 18 06 30 00 09 06
+    rx 601 [8] 2F 02 18 06 F0 00 00 00   # 240, the highest
+    tx 581 [8] 60 02 18 06 00 00 00 00
     rx 601 [8] 2F 02 18 06 03 00 00 00   # starting at counter 3
     tx 581 [8] 60 02 18 06 00 00 00 00
     rx 601 [8] 23 02 18 01 81 03 00 00

@@ -28,6 +28,9 @@ AbortCode checkCobIdWrite(const PdoProfile& profile, bool receive, bool currentl
   return AbortCode::kNone;
 }
 
+/// The highest SYNC start value (TPDO communication parameter sub-index 6, CiA 301).
+constexpr uint8_t kLastSyncStartValue = 240;
+
 }  // namespace
 
 AbortCode PdoEngine::checkCommunicationWrite(bool receive, bool currentlyValid,
@@ -48,8 +51,12 @@ AbortCode PdoEngine::checkCommunicationWrite(bool receive, bool currentlyValid,
       }
       return AbortCode::kNone;
     }
+    case 6:  // SYNC start value: 0 (not used) or 1..240; 241..255 are reserved
+      if (!receive && length >= 1U && data[0] > kLastSyncStartValue) {
+        return AbortCode::kInvalidValue;
+      }
+      return currentlyValid && !receive ? AbortCode::kInvalidValue : AbortCode::kNone;
     case 3:  // inhibit time
-    case 6:  // SYNC start value
       return currentlyValid && !receive ? AbortCode::kInvalidValue : AbortCode::kNone;
     default: return AbortCode::kNone;
   }

@@ -21,9 +21,11 @@ constexpr uint8_t kScsDownloadSegmentResponse = 0x20;
 
 constexpr size_t kSegmentBytes = 7;
 
-// Bytes a download with e=1, s=0 carries: the value's own size when it fits.
+// Bytes a download with e=1, s=0 carries: the value's own size when it fits (a number or an
+// OCTET_STRING of up to 4 bytes); else 4, a VISIBLE_STRING's trailing NULs trimmed.
 size_t unspecifiedExpeditedLength(const od::EntryRef& ref, const uint8_t* data) {
-  if (od::isNumeric(ref.type()) && ref.size() <= 4U) {
+  const bool fixedSize = od::isNumeric(ref.type()) || ref.type() == od::DataType::kOctetString;
+  if (fixedSize && ref.size() <= 4U) {
     return ref.size();
   }
   size_t length = 4;

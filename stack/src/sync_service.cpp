@@ -8,6 +8,19 @@
 namespace costa {
 
 void SyncService::configure(Microseconds now) noexcept {
+  readParameters();
+  counter_ = 1;
+  clearLengthError();  // it belonged to the parameters before
+  if (producing()) {
+    timer_.start(now, period_);
+    clock_.schedule(timer_.next());
+  } else {
+    timer_.stop();
+  }
+  routes_.invalidate();
+}
+
+void SyncService::readParameters() noexcept {
   const auto cob = dictionary_.readUnsigned32(kCobIdIndex, 0, 0x080);
   canId_ = cob & 0x7FFU;
   producer_ = (cob & 0x40000000U) != 0U;
@@ -16,14 +29,13 @@ void SyncService::configure(Microseconds now) noexcept {
   const auto window = dictionary_.readUnsigned32(kWindowIndex, 0, 0);
   window_ = window < kLongestDelay ? window : kLongestDelay;
   overflow_ = static_cast<uint8_t>(dictionary_.readUnsigned32(kOverflowIndex, 0, 0));
-  counter_ = 1;
-  if (producer_ && period_ != 0U) {
-    timer_.start(now, period_);
-    clock_.schedule(timer_.next());
-  } else {
-    timer_.stop();
+}
+
+void SyncService::clearLengthError() noexcept {
+  if (lengthError_) {
+    lengthError_ = false;
+    emcy_.clear(kEmcyUnexpectedLength, 0);
   }
-  routes_.invalidate();
 }
 
 bool SyncService::onFrame(const CanFrame& frame, Microseconds now, SyncEvent* event) noexcept {
@@ -33,10 +45,7 @@ bool SyncService::onFrame(const CanFrame& frame, Microseconds now, SyncEvent* ev
     emcy_.raise(kEmcyUnexpectedLength, 0, kErrorCommunication);
     return false;
   }
-  if (lengthError_) {
-    lengthError_ = false;
-    emcy_.clear(kEmcyUnexpectedLength, 0);
-  }
+  clearLengthError();
   event->counter = expected != 0U ? frame.data[0] : 0U;
   event->time = now;
   event->windowEnd = windowEnd(now);
@@ -91,9 +100,16 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
       return AbortCode::kCannotStoreState;  // CiA 301: only while the cycle period is 0
     }
   }
+  const bool wasProducing = producing();
+  const uint8_t counter = counter_;
   const AbortCode written = dictionary.write(ref, data, length);
-  if (written == AbortCode::kNone) {
-    configure(clock_.now);
+  if (written == AbortCode::kNone && index == kWindowIndex) {
+    readParameters();  // the window alone: the cycle and its counter go on
+  } else if (written == AbortCode::kNone) {
+    configure(clock_.now);  // the period from the write
+    if (wasProducing && producing()) {
+      counter_ = counter;  // a running cycle keeps its counter
+    }
   }
   return written;
 }

@@ -35,7 +35,8 @@ class SyncService : public ObjectHook {
               NodeClock& clock, FrameRouter& routes) noexcept
       : dictionary_(dictionary), tx_(tx), emcy_(emcy), clock_(clock), routes_(routes) {}
 
-  /// Reads 0x1005/0x1006/0x1007/0x1019 (after a reset communication, or a write).
+  /// Reads 0x1005/0x1006/0x1007/0x1019 (after a reset communication, or a write): the counter
+  /// starts at 1, a SYNC length error (EMCY 0x8240) ends, production starts from `now`.
   void configure(Microseconds now) noexcept;
   /// Entering stopped: the producer's counter starts over at 1 when SYNC production resumes.
   void restartCounter() noexcept { counter_ = 1; }
@@ -57,12 +58,17 @@ class SyncService : public ObjectHook {
   uint32_t canId() const noexcept { return canId_; }
 
   /// 0x1005 (29-bit and restricted CAN-IDs refused, cob::isRestrictedCanId; the CAN-ID cannot
-  /// change while producing), 0x1019 (0 or 2..240, only while the period is 0); every accepted
-  /// write reconfigures the service.
+  /// change while producing), 0x1019 (0 or 2..240, only while the period is 0). An accepted
+  /// write takes effect at once: 0x1007 changes the window alone; one of 0x1005, 0x1006 or
+  /// 0x1019 configures the service from the write (configure()), except that production that
+  /// goes on keeps its counter.
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
 
  private:
+  bool producing() const noexcept { return producer_ && period_ != 0U; }
+  void readParameters() noexcept;
+  void clearLengthError() noexcept;
   Microseconds windowEnd(Microseconds time) const noexcept {
     return window_ == 0U ? kNever : at(time, window_);
   }
