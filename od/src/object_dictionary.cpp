@@ -128,14 +128,29 @@ uint8_t* ObjectDictionary::ramAddress(const EntryRef& ref) noexcept {
   return values_ + ref.offset();
 }
 
+namespace {
+/// The bytes of a VISIBLE_STRING before its first NUL, at most `capacity`: the library's search
+/// where speed counts, a loop where size does (it spares the library function's code).
+size_t textLength(const uint8_t* text, size_t capacity) noexcept {
+  if constexpr (kExpandFastPaths) {
+    const auto* end = static_cast<const uint8_t*>(__builtin_memchr(text, 0, capacity));
+    return end != nullptr ? static_cast<size_t>(end - text) : capacity;
+  } else {
+    size_t length = 0;
+    while (length < capacity && text[length] != 0U) {
+      ++length;
+    }
+    return length;
+  }
+}
+}  // namespace
+
 size_t ObjectDictionary::valueSize(const EntryRef& ref) const noexcept {
   if (ref.type() == DataType::kDomain) {
     return 0;
   }
   if (ref.type() == DataType::kVisibleString) {
-    const uint8_t* text = address(ref);
-    const auto* end = static_cast<const uint8_t*>(__builtin_memchr(text, 0, ref.size()));
-    return end != nullptr ? static_cast<size_t>(end - text) : ref.size();
+    return textLength(address(ref), ref.size());
   }
   return ref.size();
 }
@@ -182,8 +197,7 @@ size_t ObjectDictionary::readWhole(const EntryRef& ref, uint8_t* destination) co
   if (type != DataType::kVisibleString) {
     return size;
   }
-  const auto* end = static_cast<const uint8_t*>(__builtin_memchr(destination, 0, size));
-  return end != nullptr ? static_cast<size_t>(end - destination) : size;
+  return textLength(destination, size);
 }
 
 AbortCode ObjectDictionary::check(const EntryRef& ref, const uint8_t* source,
