@@ -22,7 +22,7 @@ AbortCode ObjectAccess::writeObserved(const od::EntryRef& ref, const uint8_t* da
   if (result != AbortCode::kNone) {
     return result;
   }
-  return observer_->onWritten(ref, !comparable || compareBytes(before, current, ref.size()) != 0);
+  return observer_->onWritten(ref, !comparable || !sameBytes(before, current, ref.size()));
 }
 
 AbortCode ObjectAccess::readStream(const od::EntryRef& ref, size_t offset, uint8_t* destination,

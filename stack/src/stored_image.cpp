@@ -9,7 +9,7 @@ namespace {
 constexpr size_t kChunkSize = 32;
 
 bool magicIsComplete(const uint8_t* bytes) noexcept {
-  return compareBytes(bytes, kImageMagic, kImageMagicSize) == 0;
+  return sameBytes(bytes, kImageMagic, kImageMagicSize);
 }
 
 /// Each magic byte is erased or right: what an erase or a magic write leaves when cut short.

@@ -1,6 +1,6 @@
 #include "simulated_drive.hpp"
 
-#include <string.h>
+#include "costa/od/bytes.hpp"
 
 namespace costa::solo {
 namespace {
@@ -84,7 +84,7 @@ void SimulatedDrive::step(const DriveCommand& command, Microseconds elapsed) noe
   // Bit for bit on purpose, so that -0.0 is not taken for 0.0, nor a NaN for anything; State
   // has no padding (static_assert in the header).
   // NOLINTNEXTLINE(bugprone-suspicious-memory-comparison,cert-exp42-c,cert-flp37-c)
-  resting_ = memcmp(&before, &s_, sizeof(State)) == 0;
+  resting_ = sameBytes(&before, &s_, sizeof(State));
   lastCommand_ = command;
 }
 
