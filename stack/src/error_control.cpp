@@ -94,8 +94,8 @@ void ErrorControl::onHeartbeatEvent(const HeartbeatConsumer::Event& event) noexc
         [&event](NodeEvents& listener) { listener.onHeartbeatTimeout(event.nodeId); });
     onCommunicationError();
   } else if (event.kind != HeartbeatConsumer::EventKind::kNone) {
-    // kResumed, or kWithdrawn: the entry's new value starts monitoring over, as reset
-    // communication does (reset()). Either ends the error the entry had found.
+    // kResumed (the heartbeat is back) or kWithdrawn (the entry's new value starts monitoring
+    // over, as reset communication does, reset()): either ends the error the entry had found.
     if (profile_.emcyForErrors) {
       emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
     }

@@ -120,9 +120,8 @@ void TpdoChannel::onRemoteRequest(PdoContext& context, Microseconds now) noexcep
     send(context, sampled_, now, kNever);
   } else if (eventDriven() && inhibitUntil_ != kNever && !reached(now, inhibitUntil_)) {
     // CiA 301: the inhibit time is the least interval between transmissions of an event-driven
-    // TPDO, answers included: the answer leaves at its end (process()), as an event would.
-    event_ = true;
-    context.clock.schedule(inhibitUntil_);
+    // TPDO, answers included: within it the answer waits as an event does (process()).
+    (void)signalEvent(context.clock);
   } else if (type_ >= 253U ||
              (type_ <= 240U && context.profile.tpdoRtrTypes == TpdoRtrTypes::kAllTypes)) {
     sendCurrent(context, now, kNever);

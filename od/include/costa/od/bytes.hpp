@@ -6,6 +6,8 @@
 
 #include <stddef.h>
 
+#include "costa/od/little_endian.hpp"
+
 namespace costa {
 
 inline void copyBytes(void* to, const void* from, size_t count) noexcept {
@@ -36,20 +38,20 @@ inline void storeAligned(void* address, T value) noexcept {
 }
 
 /// True when the `count` bytes at `a` and at `b` are equal: the library's comparison where speed
-/// counts, a loop in a build for size (-Os), which spares the library function's code.
+/// counts, a loop in a build for size (kExpandFastPaths), which spares the library's code.
 inline bool sameBytes(const void* a, const void* b, size_t count) noexcept {
-#if defined(__OPTIMIZE_SIZE__)
-  const auto* left = static_cast<const unsigned char*>(a);
-  const auto* right = static_cast<const unsigned char*>(b);
-  for (size_t i = 0; i < count; ++i) {
-    if (left[i] != right[i]) {
-      return false;
+  if constexpr (kExpandFastPaths) {
+    return __builtin_memcmp(a, b, count) == 0;
+  } else {
+    const auto* left = static_cast<const unsigned char*>(a);
+    const auto* right = static_cast<const unsigned char*>(b);
+    for (size_t i = 0; i < count; ++i) {
+      if (left[i] != right[i]) {
+        return false;
+      }
     }
+    return true;
   }
-  return true;
-#else
-  return __builtin_memcmp(a, b, count) == 0;
-#endif
 }
 
 }  // namespace costa
