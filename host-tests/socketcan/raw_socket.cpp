@@ -6,6 +6,8 @@
 #include <net/if.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/uio.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -39,6 +41,11 @@ bool RawCanSocket::open(const std::string& interfaceName, std::string* error) {
     *error = "cannot bind to " + interfaceName + ": " + std::strerror(errno);
     return false;
   }
+  const int on = 1;  // every received frame carries the time it went onto the interface
+  if (::setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof(on)) != 0) {
+    *error = std::string("setsockopt(SO_TIMESTAMPNS): ") + std::strerror(errno);
+    return false;
+  }
   return true;
 }
 
@@ -61,14 +68,48 @@ bool RawCanSocket::sendErrorFrame(uint32_t errorClass, uint8_t controller) {
   return ::write(fd_, &raw, sizeof(raw)) == static_cast<ssize_t>(sizeof(raw));
 }
 
-bool RawCanSocket::receive(CanFrame* frame, int timeoutMs) {
+namespace {
+
+/// The moment `stamp` (CLOCK_REALTIME, as the kernel stamps frames) on the steady clock.
+std::chrono::steady_clock::time_point onSteadyClock(const timespec& stamp) {
+  const auto now = std::chrono::system_clock::now();
+  const auto steadyNow = std::chrono::steady_clock::now();
+  const auto at = std::chrono::system_clock::time_point(
+      std::chrono::duration_cast<std::chrono::system_clock::duration>(
+          std::chrono::seconds(stamp.tv_sec) + std::chrono::nanoseconds(stamp.tv_nsec)));
+  const auto age = std::chrono::duration_cast<std::chrono::steady_clock::duration>(now - at);
+  return age > std::chrono::steady_clock::duration::zero() ? steadyNow - age : steadyNow;
+}
+
+}  // namespace
+
+bool RawCanSocket::receive(CanFrame* frame, int timeoutMs,
+                           std::chrono::steady_clock::time_point* onBus) {
   pollfd descriptor{fd_, POLLIN, 0};
   if (::poll(&descriptor, 1, timeoutMs) <= 0) {
     return false;
   }
   can_frame raw{};
-  if (::read(fd_, &raw, sizeof(raw)) != static_cast<ssize_t>(sizeof(raw))) {
+  iovec data{&raw, sizeof(raw)};
+  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec))];
+  msghdr message{};
+  message.msg_iov = &data;
+  message.msg_iovlen = 1;
+  message.msg_control = control;
+  message.msg_controllen = sizeof(control);
+  if (::recvmsg(fd_, &message, 0) != static_cast<ssize_t>(sizeof(raw))) {
     return false;
+  }
+  if (onBus != nullptr) {
+    *onBus = std::chrono::steady_clock::now();
+    for (cmsghdr* header = CMSG_FIRSTHDR(&message); header != nullptr;
+         header = CMSG_NXTHDR(&message, header)) {
+      if (header->cmsg_level == SOL_SOCKET && header->cmsg_type == SCM_TIMESTAMPNS) {
+        timespec stamp{};
+        std::memcpy(&stamp, CMSG_DATA(header), sizeof(stamp));
+        *onBus = onSteadyClock(stamp);
+      }
+    }
   }
   *frame = CanFrame{};
   frame->extended = (raw.can_id & CAN_EFF_FLAG) != 0U;

@@ -3,6 +3,7 @@
 
 #include <stdint.h>
 
+#include <chrono>
 #include <string>
 
 #include "costa/port/can_frame.hpp"
@@ -23,8 +24,11 @@ class RawCanSocket {
   /// `controller` (CAN_ERR_CRTL_*) in data[1]. Other sockets on the interface that asked for
   /// error frames receive it.
   bool sendErrorFrame(uint32_t errorClass, uint8_t controller);
-  /// Waits up to `timeoutMs` for a frame.
-  bool receive(CanFrame* frame, int timeoutMs);
+  /// Waits up to `timeoutMs` for a frame. `onBus`, when given, receives the moment the frame
+  /// went onto the interface (the kernel's time stamp) on the steady clock: earlier than the
+  /// return when this process was slow to read it.
+  bool receive(CanFrame* frame, int timeoutMs,
+               std::chrono::steady_clock::time_point* onBus = nullptr);
 
  private:
   int fd_ = -1;

@@ -42,10 +42,11 @@ void SocketBus::start(const std::vector<std::string>& arguments) {
 
 void SocketBus::send(const CanFrame& frame) {
   socket_.send(frame);
+  lastOnBus_ = std::chrono::steady_clock::now();
 }
 
 bool SocketBus::receive(CanFrame* frame, int timeoutMs) {
-  return socket_.receive(frame, timeoutMs);
+  return socket_.receive(frame, timeoutMs, &lastOnBus_);
 }
 
 std::string SocketBus::simulate(const std::string& command) {
@@ -78,11 +79,13 @@ std::string SocketBus::simulate(const std::string& command) {
     break;
   }
   ::close(fd);
+  lastOnBus_ = std::chrono::steady_clock::now();
   return result;
 }
 
 void SocketBus::wait(uint64_t milliseconds) {
-  std::this_thread::sleep_for(std::chrono::milliseconds(milliseconds));
+  lastOnBus_ += std::chrono::milliseconds(milliseconds);
+  std::this_thread::sleep_until(lastOnBus_);
 }
 
 }  // namespace costa::test

@@ -2,6 +2,7 @@
 // frames and receives what the slave sends; time is real.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ class SocketBus : public TranscriptBus {
 
   void send(const CanFrame& frame) override;
   bool receive(CanFrame* frame, int timeoutMs) override;
+  /// Lets `milliseconds` pass from the last thing on the bus (a frame sent, the time stamp of
+  /// a frame received, the end of a command or of the previous wait), as a transcript means it,
+  /// not from the moment this process gets to it: a test thread slow to read a heartbeat does
+  /// not push the next request later in the slave's cycle.
   void wait(uint64_t milliseconds) override;
   bool checksTiming() const override { return false; }
   /// Sends the command to costa-slave's --control socket and waits for its answer.
@@ -49,6 +54,7 @@ class SocketBus : public TranscriptBus {
   std::unique_ptr<SlaveProcess> slave_;
   std::string controlPath_;
   std::string error_;
+  std::chrono::steady_clock::time_point lastOnBus_ = std::chrono::steady_clock::now();
 };
 
 /// Milliseconds to wait for each expected frame over SocketCAN. Generous: the suite may run in
