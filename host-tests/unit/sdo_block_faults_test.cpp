@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "block_transfer_fixture.hpp"
+#include "costa/crc16.hpp"
 
 namespace costa::test {
 namespace {
@@ -184,6 +185,58 @@ TEST_F(BlockTransferTest, LostLastDownloadSegmentFrameByFrame) {
                      bus_),
             "");
   EXPECT_EQ(device().scratchPadLength(), 0U);
+}
+
+/// The `rx` line of download segment `sequence` of a sub-block that starts at segment
+/// `firstOfSubBlock` of `data` (0x80 when it is the last one of all).
+std::string segmentLine(const std::vector<uint8_t>& data, int sequence, bool lastOfAll,
+                        int firstOfSubBlock = 0) {
+  uint8_t frame[8] = {static_cast<uint8_t>(sequence | (lastOfAll ? 0x80 : 0))};
+  const size_t from = static_cast<size_t>(firstOfSubBlock + sequence - 1) * 7U;
+  for (size_t i = 0; i < 7U && from + i < data.size(); ++i) {
+    frame[1U + i] = data[from + i];
+  }
+  return "rx 601 [8] " + hexBytes(frame, 8) + "\n";
+}
+
+// A segment that closed a sub-block, received twice (a controller may deliver a frame twice):
+// the copy is ignored, before a smaller next sub-block (no 0x05040003), before one as large
+// (no second acknowledgement) and after the last segment (no 0x05040001), without CRC and with.
+TEST_F(BlockTransferTest, ARepeatedClosingSegmentIsIgnored) {
+  for (const bool crc : {false, true}) {
+    SCOPED_TRACE(crc ? "with CRC" : "without CRC");
+    // 127 + 2 segments, then 127 + 127.
+    for (const size_t size : {size_t{127 * 7 + 10}, size_t{2 * 127 * 7}}) {
+      SCOPED_TRACE(std::to_string(size) + " bytes");
+      const std::vector<uint8_t> data = pattern(size);
+      const int rest = segmentsOf(size) - 127;
+      const uint8_t initiate[8] = {
+          static_cast<uint8_t>(crc ? 0xC6 : 0xC2), 0x08, 0x20, 0, static_cast<uint8_t>(size),
+          static_cast<uint8_t>(size >> 8U)};
+      std::string text =
+          "rx 601 [8] " + hexBytes(initiate, 8) + "\n" + "tx 581 [8] A4 08 20 00 7F 00 00 00\n";
+      std::string first;
+      for (int sequence = 1; sequence <= 127; ++sequence) {
+        first += segmentLine(data, sequence, false);
+      }
+      const uint8_t firstAck[8] = {0xA2, 0x7F, static_cast<uint8_t>(rest)};
+      text += first + "tx 581 [8] " + hexBytes(firstAck, 8) + "\n";
+      text += segmentLine(data, 127, false) + "silence\n";  // the closing segment again
+      for (int sequence = 1; sequence <= rest; ++sequence) {
+        text += segmentLine(data, sequence, sequence == rest, 127);
+      }
+      const uint8_t lastAck[8] = {0xA2, static_cast<uint8_t>(rest), 0x01};
+      text += "tx 581 [8] " + hexBytes(lastAck, 8) + "\n";
+      text += segmentLine(data, rest, true, 127) + "silence\n";  // the last segment again
+      const size_t unused = static_cast<size_t>(segmentsOf(size)) * 7U - size;
+      const uint16_t value = crc16(data.data(), data.size());
+      const uint8_t end[8] = {static_cast<uint8_t>(0xC1U | (unused << 2U)),
+                              static_cast<uint8_t>(value), static_cast<uint8_t>(value >> 8U)};
+      text += "rx 601 [8] " + hexBytes(end, 8) + "\ntx 581 [8] A1 00 00 00 00 00 00 00\n";
+      EXPECT_EQ(playText(text, bus_), "");
+      EXPECT_EQ(scratchPad(), data);
+    }
+  }
 }
 
 }  // namespace

@@ -33,6 +33,7 @@ AbortCode SdoBlockDownload::start(const od::EntryRef& ref, const uint8_t* reques
   crcUsed_ = (request[0] & kClientCrc) != 0U;
   crc_.reset();
   lastSequence_ = 0;
+  previousSegment_ = 0;
   blockSize_ = nextBlockSize();
   phase_ = Phase::kSegments;
   const uint8_t response[8] = {kInitiateResponse, request[1], request[2], request[3], blockSize_};
@@ -52,9 +53,16 @@ AbortCode SdoBlockDownload::onRequest(const uint8_t* request) noexcept {
 AbortCode SdoBlockDownload::segment(const uint8_t* request) noexcept {
   const auto sequence = static_cast<uint8_t>(request[0] & 0x7FU);
   const bool last = (request[0] & kLastSegment) != 0U;
-  if (sequence == 0U || sequence > blockSize_) {
+  if (sequence == 0U) {
     return AbortCode::kSequenceNumber;
   }
+  if (lastSequence_ == 0U && request[0] == previousSegment_) {
+    return AbortCode::kNone;  // the segment that closed a sub-block, received twice
+  }
+  if (sequence > blockSize_) {
+    return AbortCode::kSequenceNumber;
+  }
+  previousSegment_ = request[0];
   if (sequence != lastSequence_ + 1U) {
     // Dropped, like every later segment of this sub-block: the acknowledgement at its end
     // makes the client repeat from the last segment received in sequence.
@@ -83,7 +91,8 @@ AbortCode SdoBlockDownload::segment(const uint8_t* request) noexcept {
 
 AbortCode SdoBlockDownload::end(const uint8_t* request) noexcept {
   if ((request[0] & kEndMask) != kEndRequest) {
-    return AbortCode::kCommandSpecifier;
+    // The last segment received twice is ignored; anything else is out of place.
+    return request[0] == previousSegment_ ? AbortCode::kNone : AbortCode::kCommandSpecifier;
   }
   const size_t length = kSegmentBytes - ((request[0] >> 2U) & 0x07U);
   const AbortCode appended = writer_.append(lastSegment_, length);

@@ -20,6 +20,12 @@ namespace costa {
 /// sub-block's end (its last sequence number, or the segment marked last) the server
 /// acknowledges the last segment received in sequence, and the client repeats from there. When
 /// the sub-block's last segment is the one lost, nothing marks the end: the transfer times out.
+///
+/// The segment that closed a sub-block, received again before the next sub-block's first
+/// segment (a CAN controller may deliver a frame twice), is ignored: it neither closes the new
+/// sub-block nor aborts the transfer, and after the last segment the end frame is still
+/// awaited. (A first segment lost together with every one up to that same sequence number thus
+/// ends in the timeout too, instead of an acknowledgement of 0.)
 class SdoBlockDownload {
  public:
   SdoBlockDownload(SdoChannel& channel, SdoValueWriter& writer) noexcept
@@ -60,6 +66,9 @@ class SdoBlockDownload {
   Crc16 crc_;
   uint8_t blockSize_ = 0;     ///< Segments in the current sub-block.
   uint8_t lastSequence_ = 0;  ///< Last segment received in sequence in this sub-block.
+  /// Byte 0 of the last segment received (0: none yet). While no segment of the next sub-block
+  /// has arrived, it is that of the segment that closed the previous one.
+  uint8_t previousSegment_ = 0;
   uint8_t lastSegment_[7] = {};
 };
 
