@@ -66,6 +66,8 @@ TEST_F(SdoBlock, OutOfSequenceSegmentsAreDroppedAndRepeated) {
     rx 601 [8] 03 45 46 47 48 49 4A 4B   # 3: 2 was lost; dropped
     rx 601 [8] 84 4C 4D 4E 4F 50 51 52   # 4, last: dropped too; the sub-block ends
     tx 581 [8] A2 01 03 00 00 00 00 00   # good up to 1; 21 bytes left: blksize 3
+    rx 601 [8] 84 4C 4D 4E 4F 50 51 52   # 4 received twice: ignored, although above blksize
+    silence
     rx 601 [8] 01 37 38 39 41 42 43 44   # repeated from the old segment 2
     rx 601 [8] 02 45 46 47 48 49 4A 4B
     rx 601 [8] 83 4C 4D 4E 4F 50 51 52

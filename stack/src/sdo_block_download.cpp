@@ -53,13 +53,13 @@ AbortCode SdoBlockDownload::onRequest(const uint8_t* request) noexcept {
 AbortCode SdoBlockDownload::segment(const uint8_t* request) noexcept {
   const auto sequence = static_cast<uint8_t>(request[0] & 0x7FU);
   const bool last = (request[0] & kLastSegment) != 0U;
-  if (sequence == 0U) {
-    return AbortCode::kSequenceNumber;
+  // The segment that closed a sub-block, received twice. (A sub-block of one segment is closed
+  // by one that leaves the value no room, or by the last one: the next segment 1 is taken as
+  // such, and aborts when it does not fit.)
+  if (lastSequence_ == 0U && sequence > 1U && request[0] == previousSegment_) {
+    return AbortCode::kNone;
   }
-  if (lastSequence_ == 0U && request[0] == previousSegment_) {
-    return AbortCode::kNone;  // the segment that closed a sub-block, received twice
-  }
-  if (sequence > blockSize_) {
+  if (sequence == 0U || sequence > blockSize_) {
     return AbortCode::kSequenceNumber;
   }
   previousSegment_ = request[0];
@@ -91,7 +91,8 @@ AbortCode SdoBlockDownload::segment(const uint8_t* request) noexcept {
 
 AbortCode SdoBlockDownload::end(const uint8_t* request) noexcept {
   if ((request[0] & kEndMask) != kEndRequest) {
-    // The last segment received twice is ignored; anything else is out of place.
+    // The last segment received twice is ignored (unless its first byte reads as an end
+    // request: sequence numbers 65, 67 ... 95); anything else is out of place.
     return request[0] == previousSegment_ ? AbortCode::kNone : AbortCode::kCommandSpecifier;
   }
   const size_t length = kSegmentBytes - ((request[0] >> 2U) & 0x07U);

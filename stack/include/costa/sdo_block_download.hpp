@@ -24,8 +24,11 @@ namespace costa {
 /// The segment that closed a sub-block, received again before the next sub-block's first
 /// segment (a CAN controller may deliver a frame twice), is ignored: it neither closes the new
 /// sub-block nor aborts the transfer, and after the last segment the end frame is still
-/// awaited. (A first segment lost together with every one up to that same sequence number thus
-/// ends in the timeout too, instead of an acknowledgement of 0.)
+/// awaited. Exceptions: sequence number 1 (a sub-block of one segment) is taken as the next
+/// sub-block's first; a last segment numbered 65, 67 ... 95 reads as an end request (its first
+/// byte matches 110xxxx1) and is answered as one. When every segment of the next sub-block but
+/// its closing one is lost and that one has the same number, the transfer times out instead of
+/// being acknowledged with 0.
 class SdoBlockDownload {
  public:
   SdoBlockDownload(SdoChannel& channel, SdoValueWriter& writer) noexcept
