@@ -215,12 +215,11 @@ TEST_F(BlockTransferTest, ARepeatedClosingSegmentIsIgnored) {
           static_cast<uint8_t>(size >> 8U)};
       std::string text =
           "rx 601 [8] " + hexBytes(initiate, 8) + "\n" + "tx 581 [8] A4 08 20 00 7F 00 00 00\n";
-      std::string first;
       for (int sequence = 1; sequence <= 127; ++sequence) {
-        first += segmentLine(data, sequence, false);
+        text += segmentLine(data, sequence, false);
       }
       const uint8_t firstAck[8] = {0xA2, 0x7F, static_cast<uint8_t>(rest)};
-      text += first + "tx 581 [8] " + hexBytes(firstAck, 8) + "\n";
+      text += "tx 581 [8] " + hexBytes(firstAck, 8) + "\n";
       text += segmentLine(data, 127, false) + "silence\n";  // the closing segment again
       for (int sequence = 1; sequence <= rest; ++sequence) {
         text += segmentLine(data, sequence, sequence == rest, 127);
