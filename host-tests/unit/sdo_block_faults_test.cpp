@@ -238,5 +238,38 @@ TEST_F(BlockTransferTest, ARepeatedClosingSegmentIsIgnored) {
   }
 }
 
+// The exception the header states: a last segment numbered 65 (127 + 65 whole segments) has
+// the first byte of an end request (0xC1: 110, 0 unused bytes, cs 1), so its repeat is answered
+// as one. Without CRC the transfer then ends with every byte received and the value written, and
+// the client's own end finds no transfer; with CRC, bytes 1 and 2 of the segment are no CRC of
+// the value: 0x05040004, and the streamed scratch pad is left empty (as after any CRC error).
+TEST_F(BlockTransferTest, ARepeatedLastSegmentNumbered65IsTakenForTheEndRequest) {
+  const size_t size = (127 + 65) * 7;
+  const std::vector<uint8_t> data = pattern(size);
+  for (const bool crc : {false, true}) {
+    SCOPED_TRACE(crc ? "with CRC" : "without CRC");
+    const uint8_t initiate[8] = {
+        static_cast<uint8_t>(crc ? 0xC6 : 0xC2), 0x08, 0x20, 0, static_cast<uint8_t>(size),
+        static_cast<uint8_t>(size >> 8U)};
+    std::string text =
+        "rx 601 [8] " + hexBytes(initiate, 8) + "\n" + "tx 581 [8] A4 08 20 00 7F 00 00 00\n";
+    for (int sequence = 1; sequence <= 127; ++sequence) {
+      text += segmentLine(data, sequence, false);
+    }
+    text += "tx 581 [8] A2 7F 41 00 00 00 00 00\n";
+    for (int sequence = 1; sequence <= 65; ++sequence) {
+      text += segmentLine(data, sequence, sequence == 65, 127);
+    }
+    text += "tx 581 [8] A2 41 01 00 00 00 00 00\n";
+    text += segmentLine(data, 65, true, 127);  // again: C1 ...
+    text += crc ? "tx 581 [8] 80 08 20 00 04 00 04 05\n" : "tx 581 [8] A1 00 00 00 00 00 00 00\n";
+    const uint16_t value = crc16(data.data(), data.size());
+    const uint8_t end[8] = {0xC1, static_cast<uint8_t>(value), static_cast<uint8_t>(value >> 8U)};
+    text += "rx 601 [8] " + hexBytes(end, 8) + "\ntx 581 [8] 80 00 00 00 01 00 04 05\n";
+    EXPECT_EQ(playText(text, bus_), "");
+    EXPECT_EQ(scratchPad(), crc ? std::vector<uint8_t>{} : data);
+  }
+}
+
 }  // namespace
 }  // namespace costa::test
