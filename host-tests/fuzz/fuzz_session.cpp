@@ -357,7 +357,10 @@ class Session {
   Microseconds next_ = kNever;
   CanIdSet allowedBefore_;  ///< at the end of the last event, and while frames were queued
   CheckedState checked_;    ///< what the dictionary and CAN-ID checks last passed on
-  size_t storageChanges_ = SIZE_MAX;  // the first check always runs
+  /// Modifying calls to the medium when its contents were last checked. renew() leaves it erased
+  /// (nothing stored: every group loads as no image) with its counters at 0, so the first check
+  /// is that of the first call that modifies it.
+  size_t storageChanges_ = 0;
   uint64_t processCalls_ = 0;
   /// The node is as a power-on that left the medium unchanged made it: no event came since, or
   /// only storage power cuts (which a power cycle disarms) and events that do nothing.
