@@ -199,6 +199,21 @@ std::string segmentLine(const std::vector<uint8_t>& data, int sequence, bool las
   return "rx 601 [8] " + hexBytes(frame, 8) + "\n";
 }
 
+/// The lines of a block download of `data` to the scratch pad up to its first sub-block: the
+/// initiate (with CRC or not, the size indicated), the server's blksize 127, segments 1..127.
+std::string firstSubBlockLines(const std::vector<uint8_t>& data, bool crc) {
+  const size_t size = data.size();
+  const uint8_t initiate[8] = {
+      static_cast<uint8_t>(crc ? 0xC6 : 0xC2), 0x08, 0x20, 0, static_cast<uint8_t>(size),
+      static_cast<uint8_t>(size >> 8U)};
+  std::string text =
+      "rx 601 [8] " + hexBytes(initiate, 8) + "\n" + "tx 581 [8] A4 08 20 00 7F 00 00 00\n";
+  for (int sequence = 1; sequence <= 127; ++sequence) {
+    text += segmentLine(data, sequence, false);
+  }
+  return text;
+}
+
 // A segment that closed a sub-block, received twice (a controller may deliver a frame twice):
 // the copy is ignored, before a smaller next sub-block (no 0x05040003), before one as large
 // (no second acknowledgement) and after the last segment (no 0x05040001), without CRC and with.
@@ -210,14 +225,7 @@ TEST_F(BlockTransferTest, ARepeatedClosingSegmentIsIgnored) {
       SCOPED_TRACE(std::to_string(size) + " bytes");
       const std::vector<uint8_t> data = pattern(size);
       const int rest = segmentsOf(size) - 127;
-      const uint8_t initiate[8] = {
-          static_cast<uint8_t>(crc ? 0xC6 : 0xC2), 0x08, 0x20, 0, static_cast<uint8_t>(size),
-          static_cast<uint8_t>(size >> 8U)};
-      std::string text =
-          "rx 601 [8] " + hexBytes(initiate, 8) + "\n" + "tx 581 [8] A4 08 20 00 7F 00 00 00\n";
-      for (int sequence = 1; sequence <= 127; ++sequence) {
-        text += segmentLine(data, sequence, false);
-      }
+      std::string text = firstSubBlockLines(data, crc);
       const uint8_t firstAck[8] = {0xA2, 0x7F, static_cast<uint8_t>(rest)};
       text += "tx 581 [8] " + hexBytes(firstAck, 8) + "\n";
       text += segmentLine(data, 127, false) + "silence\n";  // the closing segment again
@@ -248,14 +256,7 @@ TEST_F(BlockTransferTest, ARepeatedLastSegmentNumbered65IsTakenForTheEndRequest)
   const std::vector<uint8_t> data = pattern(size);
   for (const bool crc : {false, true}) {
     SCOPED_TRACE(crc ? "with CRC" : "without CRC");
-    const uint8_t initiate[8] = {
-        static_cast<uint8_t>(crc ? 0xC6 : 0xC2), 0x08, 0x20, 0, static_cast<uint8_t>(size),
-        static_cast<uint8_t>(size >> 8U)};
-    std::string text =
-        "rx 601 [8] " + hexBytes(initiate, 8) + "\n" + "tx 581 [8] A4 08 20 00 7F 00 00 00\n";
-    for (int sequence = 1; sequence <= 127; ++sequence) {
-      text += segmentLine(data, sequence, false);
-    }
+    std::string text = firstSubBlockLines(data, crc);
     text += "tx 581 [8] A2 7F 41 00 00 00 00 00\n";
     for (int sequence = 1; sequence <= 65; ++sequence) {
       text += segmentLine(data, sequence, sequence == 65, 127);
