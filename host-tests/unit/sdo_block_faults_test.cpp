@@ -14,7 +14,6 @@
 namespace costa::test {
 namespace {
 
-constexpr uint32_t kTimeout = 0x05040000;
 constexpr Microseconds kSdoTimeout = 1000000;  // the example's NodeSettings::sdoTimeout
 
 int segmentsOf(size_t size) {

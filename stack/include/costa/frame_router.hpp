@@ -5,8 +5,8 @@
 // The routes are sorted by CAN-ID and indexed by function code (the CAN-ID's top four bits, as
 // CiA 301's pre-defined connection set assigns them), so a lookup looks at the few routes of
 // one function code. The error control CAN-IDs (0x701..0x77F: heartbeats of other nodes, node
-// guarding requests) are a range and are not in the table; the node tests them before looking
-// up.
+// guarding requests) are a range and are not in the table; the node tests them when the lookup
+// finds no route.
 //
 // Context: the one that runs the node. No allocation: entries live in caller-owned storage
 // (NodeMemory::routes). find() is O(routes of one function code); add() O(routes).
