@@ -77,6 +77,40 @@ TEST_F(PdoReceive, AnRpdoWithARefusedEntryIsNotWrittenAtAllAndIsCounted) {
             (std::vector<std::string>{"rpdo writing 1401", "rpdo received 1401"}));
 }
 
+// A hook whose check passes what its write then refuses (a device state that changed between the
+// two, a medium that failed): the entries written before it get their old values back.
+class RefusingWrites : public ObjectHook {
+ public:
+  AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
+                  size_t length) noexcept override {
+    ++writes;
+    (void)dictionary;
+    (void)ref;
+    (void)data;
+    (void)length;
+    return AbortCode::kCannotStoreState;
+  }
+  int writes = 0;
+};
+
+TEST_F(PdoReceive, AnEntryRefusedAtItsWriteUndoesTheEntriesWrittenBeforeIt) {
+  RefusingWrites refusing;
+  ASSERT_TRUE(hooks_.attach(0x2002, 0x2002, refusing));
+  pdos_.refreshMappings();  // 0x2002 now goes through its hook
+  pdos_.start(kStart);
+  EXPECT_TRUE(pdos_.receive(1, frame(0x305, {0x07, 12}), kStart));  // 12: within 10..20
+  EXPECT_EQ(refusing.writes, 1);
+  EXPECT_EQ(value(0x2000, 1), 0U);  // written first, then restored
+  EXPECT_EQ(value(0x2002, 0), 15U);
+  EXPECT_EQ(pdos_.rpdosRefused(), 1U);
+  // Its checks had passed: the device heard the writing begin, but never that it was received.
+  EXPECT_EQ(listener_.take(), (std::vector<std::string>{"rpdo writing 1401"}));
+  // RPDO 1 maps 0x2000:01 too, without the hook: written as ever.
+  EXPECT_TRUE(pdos_.receive(0, frame(0x205, {0x09, 0x34, 0x12}), kStart));
+  EXPECT_EQ(value(0x2000, 1), 0x09U);
+  EXPECT_EQ(pdos_.rpdosRefused(), 1U);
+}
+
 TEST_F(PdoReceive, ASynchronousRpdoIsHeldUntilTheNextSync) {
   EXPECT_EQ(write(pdos_, 0x1400, 2, 1, 1), AbortCode::kNone);
   pdos_.start(kStart);

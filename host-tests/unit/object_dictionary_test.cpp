@@ -46,6 +46,35 @@ TEST_F(ObjectDictionaryTest, ObjectsAreSortedAndEveryEntryIsFound) {
   }
 }
 
+// A definition made by hand has no hash table of its objects (objectSlots null): its sorted
+// objects are searched instead, with the same answers.
+TEST(ObjectDictionaryWithoutHashTable, FindsEveryObjectBySearchingTheSortedObjects) {
+  Definition byHand = gen::example::kDefinition;
+  byHand.objectSlots = nullptr;
+  byHand.objectSlotBits = 0;
+  gen::example::Values values{};
+  const ObjectDictionary dictionary(byHand, &values);
+  for (uint16_t i = 0; i < byHand.objectCount; ++i) {
+    const uint16_t index = byHand.objects[i].index;
+    EXPECT_EQ(dictionary.findObject(index), &byHand.objects[i]) << std::hex << index;
+    EntryRef ref;
+    EXPECT_EQ(dictionary.find(index, byHand.objects[i].rows[0].subIndex, &ref), AbortCode::kNone);
+  }
+  const uint16_t first = byHand.objects[0].index;
+  const uint16_t last = byHand.objects[byHand.objectCount - 1U].index;
+  for (const uint16_t absent :
+       {uint16_t{0x0000}, static_cast<uint16_t>(first - 1U), uint16_t{0x1004}, uint16_t{0x3000},
+        static_cast<uint16_t>(last + 1U), uint16_t{0xFFFF}}) {
+    EXPECT_EQ(dictionary.findObject(absent), nullptr) << std::hex << absent;
+    EntryRef ref;
+    EXPECT_EQ(dictionary.find(absent, 0, &ref), AbortCode::kNoObject) << std::hex << absent;
+  }
+  Definition empty = byHand;
+  empty.objectCount = 0;
+  const ObjectDictionary none(empty, &values);
+  EXPECT_EQ(none.findObject(first), nullptr);
+}
+
 TEST_F(ObjectDictionaryTest, RowsStandForRunsOfLikeSubIndices) {
   // 0x1016 holds the number of entries and three consumer times: two rows.
   const Object* consumers = dictionary_.findObject(0x1016);

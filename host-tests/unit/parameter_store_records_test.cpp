@@ -182,6 +182,86 @@ TEST_F(ParameterStoreRecordTest, DamagedRecordsFailingAndTooSmallMedia) {
   EXPECT_FALSE(store.layOut()) << "a byte short of every region";
 }
 
+/// The medium of the fixture, read through a flaw from a given read on: the read fails, or
+/// returns its bytes with the first one changed (a medium that went bad after the record's image
+/// was examined, before it was read).
+class FlawedReads : public NvStorage {
+ public:
+  enum class Flaw { kNone, kFails, kChangesAByte };
+  explicit FlawedReads(NvStorage& medium) : medium_(medium) {}
+  void from(size_t read, Flaw flaw) {
+    flawFrom_ = read;
+    flaw_ = flaw;
+    reads_ = 0;
+  }
+  size_t reads() const { return reads_; }
+
+  size_t size() const noexcept override { return medium_.size(); }
+  bool read(size_t offset, uint8_t* destination, size_t length) noexcept override {
+    const bool flawed = flaw_ != Flaw::kNone && reads_++ >= flawFrom_;
+    if (flawed && flaw_ == Flaw::kFails) {
+      return false;
+    }
+    if (!medium_.read(offset, destination, length)) {
+      return false;
+    }
+    if (flawed && length > 0U) {
+      destination[0] ^= 0x01U;
+    }
+    return true;
+  }
+  bool write(size_t offset, const uint8_t* source, size_t length) noexcept override {
+    return medium_.write(offset, source, length);
+  }
+  bool erase(size_t offset, size_t length) noexcept override {
+    return medium_.erase(offset, length);
+  }
+  bool commit() noexcept override { return medium_.commit(); }
+
+ private:
+  NvStorage& medium_;
+  size_t reads_ = 0;
+  size_t flawFrom_ = 0;
+  Flaw flaw_ = Flaw::kNone;
+};
+
+TEST_F(ParameterStoreRecordTest, AMediumThatFailsWhileARecordIsReadLoadsNothing) {
+  const uint8_t other[5] = {1, 2, 3, 4, 5};
+  ASSERT_EQ(store_.saveRecord(kOtherRecord, other, sizeof(other)), StoreResult::kOk);
+  FlawedReads medium(storage_);
+  ExampleDictionary fresh(gen::example::kDefinition);
+  ParameterStore store(fresh.dictionary, medium);
+  ASSERT_TRUE(store.reserveRecord(kLssRecord, 2));
+  ASSERT_TRUE(store.reserveRecord(kOtherRecord, 16));
+  ASSERT_TRUE(store.layOut());
+  uint8_t buffer[16] = {};
+  size_t length = 99;
+  // Unflawed, counting the reads: the image is examined, then its payload read, last.
+  medium.from(SIZE_MAX, FlawedReads::Flaw::kFails);
+  ASSERT_EQ(store.loadRecord(kOtherRecord, buffer, sizeof(buffer), &length), StoreResult::kOk);
+  ASSERT_EQ(length, sizeof(other));
+  const size_t reads = medium.reads();
+  ASSERT_GE(reads, 2U);
+
+  medium.from(0, FlawedReads::Flaw::kFails);  // the examination fails
+  length = 99;
+  EXPECT_EQ(store.loadRecord(kOtherRecord, buffer, sizeof(buffer), &length),
+            StoreResult::kMediumError);
+  EXPECT_EQ(length, 0U);
+  medium.from(reads - 1U, FlawedReads::Flaw::kFails);  // only the payload's read fails
+  length = 99;
+  EXPECT_EQ(store.loadRecord(kOtherRecord, buffer, sizeof(buffer), &length),
+            StoreResult::kMediumError);
+  EXPECT_EQ(length, 0U);
+  medium.from(reads - 1U, FlawedReads::Flaw::kChangesAByte);  // its bytes no longer match
+  length = 99;
+  EXPECT_EQ(store.loadRecord(kOtherRecord, buffer, sizeof(buffer), &length), StoreResult::kCorrupt);
+  EXPECT_EQ(length, 0U);
+  medium.from(SIZE_MAX, FlawedReads::Flaw::kNone);  // the medium itself was never changed
+  EXPECT_EQ(store.loadRecord(kOtherRecord, buffer, sizeof(buffer), &length), StoreResult::kOk);
+  EXPECT_EQ(std::vector<uint8_t>(buffer, buffer + length), std::vector<uint8_t>(other, other + 5));
+}
+
 TEST_F(ParameterStoreRecordTest, PowerLossDuringASaveOrInvalidateKeepsAWholeRecord) {
   const uint8_t first[2] = {0x11, 0x11};
   const uint8_t second[2] = {0x22, 0x22};

@@ -256,6 +256,17 @@ constexpr const char* kTimedTpdo1 = R"(
     tx 181 [6] xx xx xx xx D7 00         # the event timer; inhibited until 70 ms
   )";
 
+TEST_F(AnsweringTpdos, ARefusedRpdoIsNotAnswered) {
+  static RefusingHook refusing;
+  withNode([](Node& node) { ASSERT_TRUE(node.attachHook(0x2000, 0x2000, refusing)); });
+  EXPECT_TRANSCRIPT(R"(
+    rx 000 [2] 01 01
+    rx 201 [5] 10 27 00 00 F6            # of the right length, then refused: no answer
+    silence
+  )");
+  EXPECT_EQ(value(0x2000, 0), 1000U);  // nothing written
+}
+
 TEST_F(AnsweringTpdos, ARefusedRpdoDoesNotTakeBackTheEventTimersTransmission) {
   static RefusingHook refusing;
   withNode([](Node& node) { ASSERT_TRUE(node.attachHook(0x2000, 0x2000, refusing)); });

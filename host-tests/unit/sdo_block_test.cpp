@@ -292,6 +292,13 @@ TEST_F(SdoBlock, UploadRefusalsAndWrongSteps_05040001) {
     tx 581 [8] C5 32 17 00 00 00 00 00
     rx 601 [8] A3 00 00 00 00 00 00 00   # start instead of the end response
     tx 581 [8] 80 08 10 00 01 00 04 05
+    rx 601 [8] A4 08 10 00 7F 00 00 00
+    tx 581 [8] C6 08 10 00 0D 00 00 00
+    rx 601 [8] A3 00 00 00 00 00 00 00
+    tx 581 [8] 01 43 6F 73 74 61 20 65
+    tx 581 [8] 82 78 61 6D 70 6C 65 00
+    rx 601 [8] A1 00 00 00 00 00 00 00   # end response instead of the acknowledgement
+    tx 581 [8] 80 08 10 00 01 00 04 05
   )");
 }
 

@@ -39,6 +39,15 @@ TEST_F(TimeOfDayTest, AConsumedFrameSetsTheClockOfDayWhichRunsOn) {
   EXPECT_EQ(bus_.node().statistics().timeFramesIgnored, 0U);
 }
 
+TEST_F(TimeOfDayTest, TheApplicationCannotSetATimePastMidnight) {
+  EXPECT_FALSE(bus_.node().setTimeOfDay(timeOf(86400000, 3)));  // 24:00:00.000
+  TimeOfDay none;
+  EXPECT_FALSE(bus_.node().timeOfDay(&none));  // still never set
+  ASSERT_TRUE(bus_.node().setTimeOfDay(timeOf(86399999, 3)));
+  EXPECT_FALSE(bus_.node().setTimeOfDay(timeOf(0xFFFFFFFFU, 4)));
+  EXPECT_EQ(clockOfDay(bus_.node()), timeOf(86399999, 3));  // the refused one changed nothing
+}
+
 TEST_F(TimeOfDayTest, TheClockOfDayKeepsTimeForHoursAcrossTheMicrosecondClocksWrap) {
   EXPECT_TRANSCRIPT("rx 100 [6] 00 00 00 00 00 00   # midnight, day 0");
   for (int halfHour = 0; halfHour < 10; ++halfHour) {  // 5 h: the 32-bit µs clock wraps

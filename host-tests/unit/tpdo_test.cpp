@@ -279,6 +279,28 @@ TEST_F(Tpdo, SyncStartValueDelaysTheFirstTransmission) {
   )");
 }
 
+// CiA 301, 0x1800 sub-index 6: without a counter in the SYNC (0x1019 = 0), the start value has
+// nothing to match and is not used: the PDO counts its SYNCs from the first.
+TEST_F(Tpdo, SyncStartValueIsNotUsedWhenTheSyncCarriesNoCounter) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 02 18 02 02 00 00 00   # TPDO3 every 2nd SYNC
+    tx 581 [8] 60 02 18 02 00 00 00 00
+    rx 601 [8] 2F 02 18 06 03 00 00 00   # starting at counter 3
+    tx 581 [8] 60 02 18 06 00 00 00 00
+    rx 601 [8] 23 02 18 01 81 03 00 00
+    tx 581 [8] 60 02 18 01 00 00 00 00
+    rx 000 [2] 01 01
+    rx 080 [0]
+    silence
+    rx 080 [0]
+    tx 381 [4] E8 03 00 00
+    rx 080 [0]
+    silence
+    rx 080 [0]
+    tx 381 [4] E8 03 00 00
+  )");
+}
+
 TEST_F(Tpdo, SynchronousPdosAreDroppedWhenTheSyncWindowHasPassed) {
   EXPECT_TRANSCRIPT(std::string(R"(
     rx 601 [8] 23 07 10 00 E8 03 00 00   # window 1000 us
