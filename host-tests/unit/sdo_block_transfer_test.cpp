@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "block_transfer_fixture.hpp"
+#include "costa/od/little_endian.hpp"
 
 namespace costa::test {
 namespace {
@@ -51,6 +52,29 @@ TEST_F(BlockTransferTest, DownloadWithoutSizeIndication) {
   options.sizeIndicated = false;
   const BlockTransferResult down = client_.download(kScratchPad, 0, data, options);
   ASSERT_TRUE(down.ok()) << down.error << " abort " << std::hex << down.abortCode;
+  EXPECT_EQ(scratchPad(), data);
+}
+
+// Without a size, the scratch pad learns that a value is too long only when the chunk that
+// overflows its 12 KiB reaches it: the server aborts there, in the middle of a sub-block, with
+// the hook's code, and the streamed value is discarded.
+TEST_F(BlockTransferTest, ADownloadWithoutSizeIsAbortedWhereItOverflowsTheStreamingHook) {
+  ASSERT_TRUE(client_.download(kScratchPad, 0, pattern(50)).ok());
+  BlockTransferOptions options;
+  options.sizeIndicated = false;
+  const BlockTransferResult down = client_.download(
+      kScratchPad, 0, pattern(example::ExampleDevice::kScratchPadCapacity + 100U), options);
+  EXPECT_EQ(down.abortCode, 0x06070012U);  // length too high
+  EXPECT_EQ(device().scratchPadLength(), 0U);
+  // The rest of that sub-block: requests out of place now, each aborted with 0x05040001.
+  CanFrame frame;
+  while (bus_.receive(&frame, 0)) {
+    EXPECT_EQ(frame.id, 0x581U);
+    EXPECT_EQ(frame.data[0], 0x80U);
+    EXPECT_EQ(loadU32(frame.data + 4), 0x05040001U);
+  }
+  const std::vector<uint8_t> data = pattern(example::ExampleDevice::kScratchPadCapacity);
+  ASSERT_TRUE(client_.download(kScratchPad, 0, data, options).ok());  // exactly full: taken
   EXPECT_EQ(scratchPad(), data);
 }
 
