@@ -96,6 +96,19 @@ TEST_F(SrdoTest, AValidPairIsWrittenToTheMappedEntries) {
   EXPECT_EQ(log_.count, 0U);
 }
 
+TEST_F(SrdoTest, FramesOutsideOperationalAreIgnored) {
+  EXPECT_TRANSCRIPT(kValidate);
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [4] 11 22 33 44               # pre-operational: no SRDO runs
+    rx 104 [4] EE DD CC BB
+    wait 200                             # no SCT, no SRVT either
+    silence
+    rx 601 [8] 40 05 20 02 00 00 00 00
+    tx 581 [8] 4B 05 20 02 34 12 00 00   # not written
+  )");
+  EXPECT_EQ(log_.count, 0U);
+}
+
 TEST_F(SrdoTest, AMissingInvertedFrameEntersTheSafeStateAtSrvt) {
   startSafety();
   EXPECT_TRANSCRIPT(R"(
@@ -226,6 +239,19 @@ TEST_F(SrdoTest, AConfigurationChangedWhileOperationalEntersTheSafeState) {
     tx 081 [8] 00 63 11 07 01 00 00 00
   )");
   expectSafeState(1, SrdoFailure::kConfigurationChanged);
+}
+
+TEST_F(SrdoTest, AReceiveSrdoWhoseConfigurationChangedDeliversNothing) {
+  startSafety();
+  EXPECT_TRUE(bus_.node().dictionary().storeUnsigned(0x1302, 3, 25));  // SRVT, behind its back
+  EXPECT_TRANSCRIPT(R"(
+    rx 103 [4] 11 22 33 44
+    rx 104 [4] EE DD CC BB               # a valid pair, of another configuration
+    tx 081 [8] 00 63 11 07 02 00 00 00   # 0x6300, failure 7, SRDO 2
+    rx 601 [8] 40 05 20 02 00 00 00 00
+    tx 581 [8] 4B 05 20 02 34 12 00 00   # not written
+  )");
+  expectSafeState(2, SrdoFailure::kConfigurationChanged);
 }
 
 TEST_F(SrdoTest, LeavingOperationalEndsTheSafeStateAndEnteringItStartsAgain) {
