@@ -322,6 +322,50 @@ TEST_F(SrdoTest, AMappingIsPairsOfANormalAndAnInvertedEntryOfTheSameSize) {
   )");
 }
 
+// Each entry of a pair is checked when the count takes it in: whole bytes and not 0
+// (0x06040043), an existing entry (0x06020000), its own size (0x06040043). A refused count leaves
+// the mapping disabled (0).
+TEST_F(SrdoTest, EveryEntryOfAMappingIsCheckedWhenTheCountTakesItIn) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2F 02 13 01 00 00 00 00   # SRDO 2 not valid
+    tx 581 [8] 60 02 13 01 00 00 00 00
+    rx 601 [8] 2F 82 13 00 00 00 00 00
+    tx 581 [8] 60 82 13 00 00 00 00 00
+    rx 601 [8] 23 82 13 02 10 03 05 20   # inverted: 0x2005:03, 16 bits
+    tx 581 [8] 60 82 13 02 00 00 00 00
+    rx 601 [8] 23 82 13 01 11 02 05 20   # normal: 0x2005:02 as 17 bits
+    tx 581 [8] 60 82 13 01 00 00 00 00
+    rx 601 [8] 2F 82 13 00 02 00 00 00
+    tx 581 [8] 80 82 13 00 43 00 04 06
+    rx 601 [8] 23 82 13 01 10 00 00 30   # 0x3000:00: no such object
+    tx 581 [8] 60 82 13 01 00 00 00 00
+    rx 601 [8] 2F 82 13 00 02 00 00 00
+    tx 581 [8] 80 82 13 00 00 00 02 06
+    rx 601 [8] 23 82 13 01 20 02 05 20   # 0x2005:02 (16 bits) as 32
+    tx 581 [8] 60 82 13 01 00 00 00 00
+    rx 601 [8] 2F 82 13 00 02 00 00 00
+    tx 581 [8] 80 82 13 00 43 00 04 06
+    rx 601 [8] 23 82 13 01 20 00 00 20   # two pairs of 0x2000, 4 bytes each: 8, the most
+    tx 581 [8] 60 82 13 01 00 00 00 00
+    rx 601 [8] 23 82 13 02 20 00 00 20
+    tx 581 [8] 60 82 13 02 00 00 00 00
+    rx 601 [8] 23 82 13 03 20 00 00 20
+    tx 581 [8] 60 82 13 03 00 00 00 00
+    rx 601 [8] 23 82 13 04 20 00 00 20
+    tx 581 [8] 60 82 13 04 00 00 00 00
+    rx 601 [8] 2F 82 13 00 04 00 00 00
+    tx 581 [8] 60 82 13 00 00 00 00 00
+    rx 601 [8] 2F 82 13 00 00 00 00 00
+    tx 581 [8] 60 82 13 00 00 00 00 00
+    rx 601 [8] 23 82 13 03 00 00 00 00   # an entry 0 in a pair
+    tx 581 [8] 60 82 13 03 00 00 00 00
+    rx 601 [8] 2F 82 13 00 04 00 00 00
+    tx 581 [8] 80 82 13 00 43 00 04 06
+    rx 601 [8] 40 82 13 00 00 00 00 00
+    tx 581 [8] 4F 82 13 00 00 00 00 00
+  )");
+}
+
 // CiA 304 maps the inverted data as an object of its own, which the application keeps. SRDO 1
 // with the inverted data of 0x2005:01 in 0x2005:04; signature (worked as above) over
 //   01 | 64 00 | 14 | 01 01 00 00 | 02 01 00 00 | 04 | 01 20 00 01 20 | 02 20 00 01 20
