@@ -186,68 +186,6 @@ TEST_F(Rpdo, DummyEntriesSkipBytes) {
   EXPECT_EQ(value(0x2004, 1), 1U);
 }
 
-// The dummy entries of CiA 301 take their type's size: 0x0003 INTEGER16 and 0x0006 UNSIGNED16
-// two bytes, 0x0004 INTEGER32 and 0x0007 UNSIGNED32 four; any other length is refused.
-TEST_F(Rpdo, DummyEntriesOfTwoAndFourBytes) {
-  EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 2F 02 16 00 00 00 00 00   # RPDO3 mapping: disable
-    tx 581 [8] 60 02 16 00 00 00 00 00
-    rx 601 [8] 23 02 16 01 10 00 03 00   # dummy INTEGER16
-    tx 581 [8] 60 02 16 01 00 00 00 00
-    rx 601 [8] 23 02 16 02 20 00 07 00   # dummy UNSIGNED32
-    tx 581 [8] 60 02 16 02 00 00 00 00
-    rx 601 [8] 23 02 16 03 08 01 04 20   # 0x2004:01 BOOLEAN
-    tx 581 [8] 60 02 16 03 00 00 00 00
-    rx 601 [8] 2F 02 16 00 03 00 00 00
-    tx 581 [8] 60 02 16 00 00 00 00 00
-    rx 601 [8] 23 02 14 01 01 04 00 00   # COB-ID 0x401, valid
-    tx 581 [8] 60 02 14 01 00 00 00 00
-    rx 000 [2] 01 01
-    rx 401 [7] FF FF 00 00 00 00 01
-  )");
-  EXPECT_EQ(value(0x2004, 1), 1U);
-  EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 23 02 14 01 01 04 00 80   # RPDO3 invalid: its mapping may change
-    tx 581 [8] 60 02 14 01 00 00 00 00
-    rx 601 [8] 2F 02 16 00 00 00 00 00
-    tx 581 [8] 60 02 16 00 00 00 00 00
-    rx 601 [8] 23 02 16 01 08 00 06 00   # dummy UNSIGNED16 as 8 bits
-    tx 581 [8] 80 02 16 01 43 00 04 06
-    rx 601 [8] 23 02 16 01 10 00 04 00   # dummy INTEGER32 as 16 bits
-    tx 581 [8] 80 02 16 01 43 00 04 06
-    rx 601 [8] 23 02 16 01 10 00 06 00   # dummy UNSIGNED16, 16 bits
-    tx 581 [8] 60 02 16 01 00 00 00 00
-    rx 601 [8] 2F 02 16 00 01 00 00 00
-    tx 581 [8] 60 02 16 00 00 00 00 00
-  )");
-}
-
-// Two RPDOs on one CAN-ID: the frame is each one's, checked and written by each.
-TEST_F(Rpdo, TwoRpdosOnOneCanIdBothTakeTheFrame) {
-  EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 23 01 14 01 01 03 00 80   # RPDO2 (0x2004:03, 0x2005:01, 0x2005:02) invalid
-    tx 581 [8] 60 01 14 01 00 00 00 00
-    rx 601 [8] 23 01 14 01 01 02 00 00   # RPDO2 on 0x201, RPDO1's CAN-ID
-    tx 581 [8] 60 01 14 01 00 00 00 00
-    rx 000 [2] 01 01
-    rx 201 [8] 10 27 00 00 F6 FF 34 12
-    tx 081 [8] 20 82 11 00 00 00 00 00   # 8 bytes where RPDO1 maps 5: 0x8220, still written
-  )");
-  EXPECT_EQ(value(0x2000, 0), 10000U);  // RPDO1
-  EXPECT_EQ(static_cast<int64_t>(value(0x2004, 2)), -10);
-  EXPECT_EQ(static_cast<int64_t>(value(0x2004, 3)), 10000);  // RPDO2
-  EXPECT_EQ(value(0x2005, 1), 0xFFF6U);
-  EXPECT_EQ(value(0x2005, 2), 0x1234U);
-  EXPECT_EQ(bus_.node().statistics().framesIgnored, 0U);
-  // One of them refusing its data leaves the other's write as it is: 0x2000 below its limit.
-  EXPECT_TRANSCRIPT("rx 201 [8] 05 00 00 00 F5 01 00 02");
-  EXPECT_EQ(value(0x2000, 0), 10000U);
-  EXPECT_EQ(static_cast<int64_t>(value(0x2004, 2)), -10);
-  EXPECT_EQ(static_cast<int64_t>(value(0x2004, 3)), 5);
-  EXPECT_EQ(value(0x2005, 1), 0x01F5U);
-  EXPECT_EQ(value(0x2005, 2), 0x0200U);
-}
-
 class RecordingRpdoEvents : public NodeEvents {
  public:
   void onRpdoReceived(uint16_t index) noexcept override { last = index; }

@@ -80,45 +80,6 @@ TEST_F(SdoExpedited, DownloadWithoutSizeTakesTheObjectsSize) {
   EXPECT_EQ(value(0x2000, 0), 10U);
 }
 
-// docs/manual-errata.md: without a size, a VISIBLE_STRING takes the 4 bytes less their trailing
-// NULs (which only a string of fewer than 4 characters would tell apart: a string reads up to its
-// first NUL); a DOMAIN or an object longer than 4 bytes takes 4, which its own length rule then
-// judges.
-TEST_F(SdoExpedited, DownloadWithoutSizeOfAStringOrALongerObject) {
-  EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 22 06 20 00 41 42 00 00   # "AB" and two NULs
-    tx 581 [8] 60 06 20 00 00 00 00 00
-    rx 601 [8] 40 06 20 00 00 00 00 00
-    tx 581 [8] 4B 06 20 00 41 42 00 00   # 2 bytes
-    rx 601 [8] 22 06 20 00 41 00 43 00   # a NUL inside: 3 bytes written,
-    tx 581 [8] 60 06 20 00 00 00 00 00
-    rx 601 [8] 40 06 20 00 00 00 00 00
-    tx 581 [8] 4F 06 20 00 41 00 00 00   # read back up to the first NUL
-    rx 601 [8] 22 06 20 00 57 58 59 5A   # "WXYZ"
-    tx 581 [8] 60 06 20 00 00 00 00 00
-    rx 601 [8] 40 06 20 00 00 00 00 00
-    tx 581 [8] 43 06 20 00 57 58 59 5A
-    rx 601 [8] 22 06 20 00 00 00 00 00   # nothing but NULs: the empty string
-    tx 581 [8] 60 06 20 00 00 00 00 00
-    rx 601 [8] 40 06 20 00 00 00 00 00
-    tx 581 [8] 41 06 20 00 00 00 00 00   # 0 bytes: segmented, one empty segment
-    rx 601 [8] 60 00 00 00 00 00 00 00
-    tx 581 [8] 0F 00 00 00 00 00 00 00
-    rx 601 [8] 22 08 20 00 01 00 00 00   # 0x2008, the DOMAIN scratch pad: 4 bytes
-    tx 581 [8] 60 08 20 00 00 00 00 00
-    rx 601 [8] 40 08 20 00 00 00 00 00
-    tx 581 [8] 43 08 20 00 01 00 00 00
-    rx 601 [8] 22 07 20 00 01 02 03 04   # 0x2007, OCTET_STRING of 8: 4 bytes are too few
-    tx 581 [8] 80 07 20 00 13 00 07 06
-    rx 601 [8] 40 07 20 00 00 00 00 00   # unchanged
-    tx 581 [8] 41 07 20 00 08 00 00 00
-    rx 601 [8] 60 00 00 00 00 00 00 00
-    tx 581 [8] 00 00 11 22 33 44 55 66
-    rx 601 [8] 70 00 00 00 00 00 00 00
-    tx 581 [8] 1D 77 00 00 00 00 00 00
-  )");
-}
-
 TEST_F(SdoExpedited, DownloadsAShortStringAndPadsIt) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2B 06 20 00 4F 4B 00 00   # "OK"
