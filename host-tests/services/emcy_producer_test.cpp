@@ -40,15 +40,18 @@ CanFrame emcy(uint16_t code, uint8_t errorRegister, const uint8_t* manufacturer 
 }
 
 // CiA 301's error code classes and the error register bits they name; the other classes (generic,
-// device hardware and software, modules, monitoring but communication, external) name none but
-// the generic bit, which every condition sets.
+// device hardware and software, modules, monitoring other than communication and protocol, as
+// CiA 402's speed and position errors, external) name none but the generic bit, which every
+// condition sets.
 TEST(ErrorRegisterBitFor, EachClassOfErrorCodeNamesItsBit) {
   EXPECT_EQ(errorRegisterBitFor(0x2310), kErrorCurrent);
   EXPECT_EQ(errorRegisterBitFor(0x3210), kErrorVoltage);
   EXPECT_EQ(errorRegisterBitFor(0x4210), kErrorTemperature);
   EXPECT_EQ(errorRegisterBitFor(0x8130), kErrorCommunication);
+  EXPECT_EQ(errorRegisterBitFor(0x8210), kErrorCommunication);
   EXPECT_EQ(errorRegisterBitFor(0xFF01), kErrorManufacturer);
-  for (const unsigned code : {0x0000U, 0x1000U, 0x5000U, 0x6100U, 0x7000U, 0x9000U}) {
+  for (const unsigned code :
+       {0x0000U, 0x1000U, 0x5000U, 0x6100U, 0x7000U, 0x8400U, 0x8611U, 0x9000U}) {
     EXPECT_EQ(errorRegisterBitFor(static_cast<uint16_t>(code)), 0U) << std::hex << code;
   }
 }

@@ -333,7 +333,7 @@ TEST_F(SrdoTest, EveryEntryOfAMappingIsCheckedWhenTheCountTakesItIn) {
     tx 581 [8] 60 82 13 00 00 00 00 00
     rx 601 [8] 23 82 13 02 10 03 05 20   # inverted: 0x2005:03, 16 bits
     tx 581 [8] 60 82 13 02 00 00 00 00
-    rx 601 [8] 23 82 13 01 11 02 05 20   # normal: 0x2005:02 as 17 bits
+    rx 601 [8] 23 82 13 01 11 00 00 30   # normal: 0x3000:00 (none) as 17 bits: bits first
     tx 581 [8] 60 82 13 01 00 00 00 00
     rx 601 [8] 2F 82 13 00 02 00 00 00
     tx 581 [8] 80 82 13 00 43 00 04 06

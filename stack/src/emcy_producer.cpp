@@ -10,7 +10,9 @@ uint8_t errorRegisterBitFor(uint16_t code) noexcept {
     case 0x2: return kErrorCurrent;
     case 0x3: return kErrorVoltage;
     case 0x4: return kErrorTemperature;
-    case 0x8: return kErrorCommunication;
+    case 0x8:  // monitoring: communication (0x81xx) and protocol errors (0x82xx) only
+      return (code >> 8U) == 0x81U || (code >> 8U) == 0x82U ? uint8_t{kErrorCommunication}
+                                                            : uint8_t{0};
     case 0xF: return kErrorManufacturer;
     default: return 0;
   }

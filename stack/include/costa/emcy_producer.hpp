@@ -30,7 +30,9 @@ enum ErrorRegisterBit : uint8_t {
   kErrorManufacturer = 1U << 7,
 };
 
-/// The error register bit CiA 301 associates with an error code's class (0x2xxx current, ...).
+/// The error register bit CiA 301 associates with an error code's class: 0x2xxx current,
+/// 0x3xxx voltage, 0x4xxx temperature, 0x81xx/0x82xx communication, 0xFxxx manufacturer-specific;
+/// 0 for the others (the generic bit, which every condition sets, is not included).
 uint8_t errorRegisterBitFor(uint16_t code) noexcept;
 
 /// An active error condition. `source` tells apart conditions sharing a code (for example one

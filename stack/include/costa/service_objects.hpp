@@ -1,8 +1,8 @@
 // Which of the node's services owns an object of the communication area: the hook the stack
 // itself puts behind 0x1003, 0x1005..0x1007, 0x100C, 0x100D, 0x1010, 0x1011, 0x1012, 0x1014,
-// 0x1016, 0x1017, 0x1019, 0x1028, 0x1201..0x127F, 0x1300..0x13FF and 0x1400..0x1BFF. A switch,
-// not a table: no RAM
-// per object, O(1). Application hooks (HookRegistry) take precedence over these.
+// 0x1016, 0x1017, 0x1019, 0x1028, 0x1201..0x127F, 0x1300..0x13FF and 0x1400..0x1BFF. A constant
+// table of owners for 0x1000..0x102F and range tests for the rest: no RAM per object, O(1).
+// Application hooks (HookRegistry) take precedence over these.
 #pragma once
 
 #include <stdint.h>
