@@ -35,6 +35,14 @@ constexpr const char* kStart = R"(
   tx 102 [6] FF FF FF FF CB ED         # and its bit-inverted copy
 )";
 
+/// SRDO 2 made not valid and its mapping disabled (count 0): its entries may change.
+constexpr const char* kOpenSrdo2Mapping = R"(
+  rx 601 [8] 2F 02 13 01 00 00 00 00   # SRDO 2 not valid
+  tx 581 [8] 60 02 13 01 00 00 00 00
+  rx 601 [8] 2F 82 13 00 00 00 00 00
+  tx 581 [8] 60 82 13 00 00 00 00 00
+)";
+
 class SrdoTest : public ExampleNodeTest {
  protected:
   void SetUp() override {
@@ -302,11 +310,8 @@ TEST_F(SrdoTest, WritesFollowTheRulesAndInvalidateTheConfiguration) {
 }
 
 TEST_F(SrdoTest, AMappingIsPairsOfANormalAndAnInvertedEntryOfTheSameSize) {
+  EXPECT_TRANSCRIPT(kOpenSrdo2Mapping);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 2F 02 13 01 00 00 00 00   # SRDO 2 not valid
-    tx 581 [8] 60 02 13 01 00 00 00 00
-    rx 601 [8] 2F 82 13 00 00 00 00 00
-    tx 581 [8] 60 82 13 00 00 00 00 00
     rx 601 [8] 23 82 13 02 20 00 00 20   # inverted: 0x2000 (32 bits), normal 0x2005:02 (16)
     tx 581 [8] 60 82 13 02 00 00 00 00
     rx 601 [8] 2F 82 13 00 02 00 00 00
@@ -326,11 +331,8 @@ TEST_F(SrdoTest, AMappingIsPairsOfANormalAndAnInvertedEntryOfTheSameSize) {
 // (0x06040043), an existing entry (0x06020000), its own size (0x06040043). A refused count leaves
 // the mapping disabled (0).
 TEST_F(SrdoTest, EveryEntryOfAMappingIsCheckedWhenTheCountTakesItIn) {
+  EXPECT_TRANSCRIPT(kOpenSrdo2Mapping);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 2F 02 13 01 00 00 00 00   # SRDO 2 not valid
-    tx 581 [8] 60 02 13 01 00 00 00 00
-    rx 601 [8] 2F 82 13 00 00 00 00 00
-    tx 581 [8] 60 82 13 00 00 00 00 00
     rx 601 [8] 23 82 13 02 10 03 05 20   # inverted: 0x2005:03, 16 bits
     tx 581 [8] 60 82 13 02 00 00 00 00
     rx 601 [8] 23 82 13 01 11 00 00 30   # normal: 0x3000:00 (none) as 17 bits: bits first
@@ -399,11 +401,8 @@ TEST_F(SrdoTest, ATransmitSrdoSendsTheApplicationsInvertedEntryAsItIs) {
 // SRDO 2 with the inverted data of 0x2005:02 in 0x2005:04; signature over
 //   02 | 64 00 | 14 | 03 01 00 00 | 04 01 00 00 | 02 | 01 10 02 05 20 | 02 10 04 05 20 -> 0x0AAF
 TEST_F(SrdoTest, AReceiveSrdoWritesTheInvertedDataToItsOwnEntry) {
+  EXPECT_TRANSCRIPT(kOpenSrdo2Mapping);
   EXPECT_TRANSCRIPT(R"(
-    rx 601 [8] 2F 02 13 01 00 00 00 00   # SRDO 2 not valid
-    tx 581 [8] 60 02 13 01 00 00 00 00
-    rx 601 [8] 2F 82 13 00 00 00 00 00
-    tx 581 [8] 60 82 13 00 00 00 00 00
     rx 601 [8] 23 82 13 02 10 04 05 20   # the inverted data of 0x2005:02 is 0x2005:04
     tx 581 [8] 60 82 13 02 00 00 00 00
     rx 601 [8] 2F 82 13 00 02 00 00 00   # one pair: 2 bytes
