@@ -81,13 +81,9 @@ TEST_F(PdoReceive, AnRpdoWithARefusedEntryIsNotWrittenAtAllAndIsCounted) {
 // two, a medium that failed): the entries written before it get their old values back.
 class RefusingWrites : public ObjectHook {
  public:
-  AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
-                  size_t length) noexcept override {
+  AbortCode write(od::ObjectDictionary& /*dictionary*/, const od::EntryRef& /*ref*/,
+                  const uint8_t* /*data*/, size_t /*length*/) noexcept override {
     ++writes;
-    (void)dictionary;
-    (void)ref;
-    (void)data;
-    (void)length;
     return AbortCode::kCannotStoreState;
   }
   int writes = 0;
