@@ -7,9 +7,13 @@
   port/    CAN controllers, clocks, storage: port headers only, never a stack or dictionary
            header (drivers report controller events and take bit rates through
            costa/port/can_controller_event.hpp and costa/port/can_bit_rate.hpp)
+  targets/<device>/ (each directory of targets/devices.cmake): the installed headers
+           (costa/...) and its own and targets/' files by name, never a port implementation
+           but port/memory (a simulated device's own memory), never a path into another
+           directory (../, stack/src, ...)
 
-and that the freestanding parts (od/, stack/, the port interfaces) include no system header
-beyond the freestanding ones. Prints one line per violation and exits 1 when there is any.
+and that the freestanding parts (od/, stack/, the port interfaces, the devices' directories)
+include no system header beyond the freestanding ones. Prints one line per violation and exits 1 when there is any.
 `--self-test` plants violations in a scratch tree and checks that each one is reported.
 """
 import argparse
@@ -33,9 +37,31 @@ def is_port_interface(header):
     return len(parts) == 3 and parts[:2] == ['costa', 'port']
 
 
-def rule_for(relative):
-    """(allowed costa include predicate, freestanding?) for a file, or None for no rule."""
+DEVICE = re.compile(r'^\s*costa_device\(\s*\S+\s+(\S+)\s*\)', re.MULTILINE)
+
+
+def device_directories(root):
+    """The directories under targets/ that hold a device (targets/devices.cmake)."""
+    listing = root / 'targets' / 'devices.cmake'
+    if not listing.is_file():
+        return set()
+    return set(DEVICE.findall(listing.read_text(encoding='utf-8')))
+
+
+def device_may_include(header):
+    """A device's directory: installed headers and files by name, no port implementation
+    but port/memory, no path into another directory."""
+    if header.startswith('costa/port/'):
+        return is_port_interface(header) or header.startswith('costa/port/memory/')
+    return header.startswith('costa/') or '/' not in header
+
+
+def rule_for(relative, devices=frozenset()):
+    """(allowed include predicate, freestanding?) for a file, or None for no rule. The
+    predicate sees every costa/ header (od/, stack/, port/) and every quoted one (targets/)."""
     parts = relative.parts
+    if parts[0] == 'targets' and len(parts) > 2 and parts[1] in devices:
+        return device_may_include, True
     if parts[0] == 'od' and parts[1] in ('src', 'include'):
         return (lambda h: h.startswith('costa/od/') or is_port_interface(h)), True
     if parts[0] == 'stack':
@@ -48,20 +74,23 @@ def rule_for(relative):
 
 def violations(root):
     found = []
-    for top in ('od', 'stack', 'port'):
+    devices = device_directories(root)
+    for top in ('od', 'stack', 'port', 'targets'):
         for path in sorted((root / top).rglob('*')):
             if path.suffix not in SOURCES or not path.is_file():
                 continue
             relative = path.relative_to(root)
-            rule = rule_for(relative)
+            rule = rule_for(relative, devices)
             if rule is None:
                 continue
             allowed, freestanding = rule
+            checks_quoted = top == 'targets'  # elsewhere only costa/ headers cross layers
             text = path.read_text(encoding='utf-8', errors='replace')
             for match in INCLUDE.finditer(text):
                 kind, header = match.groups()
                 line = text.count('\n', 0, match.start()) + 1
-                if header.startswith('costa/') and not allowed(header):
+                crossing = header.startswith('costa/') or (checks_quoted and kind == '"')
+                if crossing and not allowed(header):
                     found.append(f'{relative}:{line}: includes {header} across a layer')
                 elif kind == '<' and freestanding and header not in FREESTANDING:
                     found.append(f'{relative}:{line}: includes <{header}>, not freestanding')
@@ -75,11 +104,23 @@ def self_test():
         'od/src/values.cpp': '#include "costa/pdo_map.hpp"\n',
         'stack/src/service.cpp': '#include "costa/port/linux/socketcan_port.hpp"\n',
         'stack/include/costa/service.hpp': '#include <vector>\n',
+        'targets/dev/dev_device.cpp': '#include "costa/port/linux/socketcan_port.hpp"\n',
+        'targets/dev/dev_target.hpp': '#include <stdio.h>\n',
+        'targets/dev/dev_hook.cpp': '#include "../../stack/src/internal.hpp"\n',
+        'targets/dev/dev_plant.cpp': '#include "linux/local_bus.hpp"\n',
     }
     clean = {
         'port/linux/src/ok.cpp': '#include "costa/port/can_frame.hpp"\n#include <stdio.h>\n',
         'od/src/ok.cpp': '#include "costa/od/entry.hpp"\n#include "costa/port/can_frame.hpp"\n',
         'stack/src/ok.cpp': '#include "costa/od/entry.hpp"\n#include <stdint.h>\n',
+        'targets/devices.cmake': 'costa_device(dev dev)\ncosta_device(dev2 dev)\n',
+        'targets/dev/ok.hpp': ('#include "costa/node.hpp"\n'
+                               '#include "costa/port/memory/memory_storage.hpp"\n'
+                               '#include "costa/port/can_frame.hpp"\n'
+                               '#include "device_control.hpp"\n#include "dev_od.hpp"\n'
+                               '#include <stdint.h>\n'),
+        'targets/linux/main.cpp': ('#include "costa/port/linux/socketcan_port.hpp"\n'
+                                   '#include <stdio.h>\n'),
     }
     with tempfile.TemporaryDirectory() as scratch:
         root = pathlib.Path(scratch)
@@ -109,7 +150,8 @@ def main():
     for line in found:
         print(line)
     if not found:
-        print('layers: every include points down (od <- stack, port interfaces <- both)')
+        print('layers: every include points down (od <- stack, port interfaces <- both, '
+              'public headers <- devices)')
     return 1 if found else 0
 
 

@@ -199,6 +199,19 @@ TEST_F(PdoParameters, MappingEntriesMustNameAWholeMappableEntry) {
   EXPECT_EQ(value(0x1600, 1), 0x20000108U);
 }
 
+TEST_F(PdoParameters, DummyEntriesAreRefusedWhereTheDictionaryDeclaresNone) {
+  // service_objects.eds has no [DummyUsage]: no dummy entry may be mapped (the example's EDS,
+  // which declares 0x0002..0x0007, maps them: transcript example/rpdo-shared-can-id-and-dummies).
+  ASSERT_EQ(dictionary_.definition().dummyUsage, 0U);
+  invalidate(0x1400, 0x205);
+  EXPECT_EQ(write(pdos_, 0x1600, 0, 0, 1), AbortCode::kNone);
+  for (const uint32_t dummy :
+       {0x00020008U, 0x00030010U, 0x00040020U, 0x00050008U, 0x00060010U, 0x00070020U}) {
+    EXPECT_EQ(write(pdos_, 0x1600, 1, dummy, 4), AbortCode::kNotMappable) << std::hex << dummy;
+  }
+  EXPECT_EQ(value(0x1600, 1), 0x20000108U);
+}
+
 TEST_F(PdoParameters, TheNumberOfEntriesMustFitAndMapSomething) {
   invalidate(0x1400, 0x205);
   EXPECT_EQ(write(pdos_, 0x1600, 0, 0, 1), AbortCode::kNone);

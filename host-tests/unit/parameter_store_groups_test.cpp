@@ -119,7 +119,7 @@ struct ManyGroupsTables {
           od::Object{static_cast<uint16_t>(0x2000U + i), od::ObjectCode::kVar, 1, &subs[i]};
     }
     definition = od::Definition{objects, kCount,   constants, nullptr, nullptr, 0, kCount,
-                                0x1234U, "groups", nullptr,   nullptr, nullptr, 0};
+                                0x1234U, "groups", nullptr,   nullptr, nullptr, 0, 0};
   }
   od::SubEntry subs[kCount]{};
   od::Object objects[kCount]{};

@@ -318,6 +318,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
               f"{_INDENT * 2}{'&costa::od::checkRealLimits' if real_limits else 'nullptr'},",
               f"{_INDENT * 2}kObjectSlots,",
               f"{_INDENT * 2}{bits},",
+              f"{_INDENT * 2}0x{device.dummy_usage:02X}U,",
               "};", "", f"}}  // namespace costa::gen::{name}", ""]
     return "\n".join(lines)
 

@@ -70,6 +70,7 @@ class OdObject:
 class Device:
     product_name: str
     objects: list = field(default_factory=list)  # OdObject, sorted by index
+    dummy_usage: int = 0  # bit n: the dummy entry of data type 0x000n may be mapped
 
     def all_entries(self):
         for obj in self.objects:

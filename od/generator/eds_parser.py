@@ -205,11 +205,39 @@ def _parse_object(index, section, subs, name_section, diag):
     return OdObject(index, name_entry.value, code, entries, section.line)
 
 
+DUMMY_TYPES = range(0x0002, 0x0008)  # INTEGER8..UNSIGNED32: whole bytes, as PDOs map
+
+
+def _dummy_usage(ini: IniFile, diag: Diagnostics) -> int:
+    """[DummyUsage] (CiA 306): bit n set when the dummy entry of data type 0x000n may be mapped
+    into an RPDO. Without the section, none may. Dummy0001 (BOOLEAN, one bit) cannot be: PDOs
+    map whole bytes."""
+    section = ini.get("DummyUsage")
+    if section is None:
+        return 0
+    usage = 0
+    for data_type in range(0x0001, 0x0008):
+        key = f"Dummy{data_type:04X}"
+        value = parse_number(section, key, diag)
+        if value is None or value == 0:
+            continue
+        line = key_line(section, key)
+        if value != 1:
+            diag.error(line, f"[{section.name}] {key}={value}: 0 or 1")
+        elif data_type not in DUMMY_TYPES:
+            diag.error(line, f"[{section.name}] {key}=1: a one-bit dummy entry cannot be "
+                             "mapped (PDOs map whole bytes)")
+        else:
+            usage |= 1 << data_type
+    return usage
+
+
 def parse_eds(ini: IniFile, diag: Diagnostics, fallback_name: str) -> Device:
     """The device described by `ini`; check `diag.has_errors` before using it."""
     info = ini.get("DeviceInfo")
     product = info.value("ProductName") if info is not None else ""
     device = Device(product or fallback_name)
+    device.dummy_usage = _dummy_usage(ini, diag)
     found = _classify(ini, diag)
     check_object_lists(ini, {i: s.line for i, s in found.objects.items()}, diag)
     for index, subs in sorted(found.subs.items()):

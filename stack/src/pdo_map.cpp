@@ -33,8 +33,9 @@ AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t va
   const auto index = static_cast<uint16_t>(value >> 16U);
   const auto subIndex = static_cast<uint8_t>(value >> 8U);
   const auto bits = static_cast<uint8_t>(value);
-  if (isDummy(index)) {
-    if (direction != PdoDirection::kReceive) {
+  if (isDummy(index)) {  // a gap in an RPDO, where the dictionary's [DummyUsage] allows it
+    if (direction != PdoDirection::kReceive ||
+        (dictionary.definition().dummyUsage & (1U << index)) == 0U) {
       return AbortCode::kNotMappable;
     }
     return bits == dummyBytes(index) * 8U ? AbortCode::kNone : AbortCode::kParameterIncompatible;

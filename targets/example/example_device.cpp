@@ -1,6 +1,6 @@
 #include "example_device.hpp"
 
-#include <string.h>
+#include "costa/od/bytes.hpp"
 
 namespace costa::example {
 namespace {
@@ -86,7 +86,7 @@ AbortCode ExampleDevice::readStream(od::ObjectDictionary& dictionary, const od::
   *produced = capacity < available ? capacity : available;
   *totalSize = scratchPadLength_;
   if (*produced > 0U) {
-    memcpy(destination, scratchPad_ + offset, *produced);
+    copyBytes(destination, scratchPad_ + offset, *produced);
   }
   return AbortCode::kNone;
 }
@@ -108,7 +108,7 @@ AbortCode ExampleDevice::writeStream(od::ObjectDictionary& dictionary, const od:
     receiving_ = true;
   }
   if (length > 0U) {
-    memcpy(scratchPad_ + offset, source, length);
+    copyBytes(scratchPad_ + offset, source, length);
   }
   if (last) {
     scratchPadLength_ = offset + length;

@@ -207,6 +207,30 @@ class StructureErrors(ErrorTestCase):
         self.assertError(BASE + "this is no key\n", 9, "expected 'Key=Value'")
 
 
+class DummyUsageErrors(ErrorTestCase):
+    def test_value_other_than_0_or_1(self):
+        text = BASE + eds("""
+            [DummyUsage]
+            Dummy0003=2
+            """)
+        self.assertError(text, line_of(text, "Dummy0003=2"), "Dummy0003=2: 0 or 1")
+
+    def test_one_bit_dummy(self):
+        text = BASE + eds("""
+            [DummyUsage]
+            Dummy0001=1
+            Dummy0002=1
+            """)
+        self.assertError(text, line_of(text, "Dummy0001=1"), "one-bit dummy entry")
+
+    def test_not_a_number(self):
+        text = BASE + eds("""
+            [DummyUsage]
+            Dummy0004=yes
+            """)
+        self.assertError(text, line_of(text, "Dummy0004=yes"), "Dummy0004")
+
+
 class EntryErrors(ErrorTestCase):
     def entry(self, keys):
         """BASE plus object 0x2000 whose keys start on line 10."""

@@ -45,6 +45,10 @@ class ExampleTest(unittest.TestCase):
         indices = [o.index for o in self.device.objects]
         self.assertEqual(indices, sorted(indices))
 
+    def test_dummy_usage(self):
+        # [DummyUsage]: Dummy0001=0, Dummy0002=1, Dummy0005=1; the others are absent (0).
+        self.assertEqual(self.device.dummy_usage, (1 << 2) | (1 << 5))
+
     def test_object_codes(self):
         self.assertEqual(self.device.find(0x1000).code, OBJECT_VAR)
         self.assertEqual(self.device.find(0x1003).code, OBJECT_ARRAY)
@@ -235,6 +239,14 @@ class InlineTest(unittest.TestCase):
     def test_product_name_falls_back_to_name(self):
         device, _ = parse_text(var("0x0005", "ro"), "solo")
         self.assertEqual(device.product_name, "solo")
+
+    def test_dummy_usage(self):
+        self.assertEqual(self.parse_ok(var("0x0005", "ro")).dummy_usage, 0)  # no section
+        every = "".join(f"Dummy{t:04X}={1 if t > 1 else 0}\n" for t in range(1, 8))
+        device = self.parse_ok(var("0x0005", "ro", "\n[DummyUsage]\n" + every))
+        self.assertEqual(device.dummy_usage, 0xFC)  # 0x0002..0x0007
+        device = self.parse_ok(var("0x0005", "ro", "\n[dummyusage]\ndummy0007=0x1\n"))
+        self.assertEqual(device.dummy_usage, 0x80)
 
 
 if __name__ == "__main__":

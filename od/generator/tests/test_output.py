@@ -168,7 +168,7 @@ class ExampleOutputTest(unittest.TestCase):
                       "    &kConstants,\n    kDefaults,\n    kDefaultBytes,\n    "
                       f"{defaults},\n    sizeof(Values),\n"
                       f"    0x{layout:08X}U,\n    \"Costa example device\",\n    kLimits,\n"
-                      "    &costa::od::checkRealLimits,\n    kObjectSlots,\n    6,\n};", self.cpp)
+                      "    &costa::od::checkRealLimits,\n    kObjectSlots,\n    6,\n    0x24U,\n};", self.cpp)
 
     def test_size_checks(self):
         self.assertIn('static_assert(sizeof(Values::x2003_serial_text) == 21, '
@@ -239,7 +239,7 @@ class SmallOutputTest(unittest.TestCase):
         self.assertIn("kHeartbeatConsumers = 0;", header)
         self.assertIn("kErrorHistory = 0;", header)
         self.assertNotIn("kLimits", result.files["test_od.cpp"])
-        self.assertIn("    nullptr,\n    nullptr,\n    kObjectSlots,\n    3,\n};",
+        self.assertIn("    nullptr,\n    nullptr,\n    kObjectSlots,\n    3,\n    0x00U,\n};",
                       result.files["test_od.cpp"])
 
     def test_literal_helpers(self):

@@ -124,6 +124,9 @@ struct Definition {
   /// sorted `objects` instead (a definition made by hand).
   const uint16_t* objectSlots;
   uint8_t objectSlotBits;
+  /// Bit n set: the dummy entry of data type 0x000n (n = 2..7, INTEGER8..UNSIGNED32) may be
+  /// mapped into an RPDO (the EDS's [DummyUsage]). 0: none may.
+  uint8_t dummyUsage;
 };
 
 /// The first slot of the object hash table to look at for `index`: Fibonacci hashing of the
