@@ -212,6 +212,22 @@ TEST_F(PdoParameters, DummyEntriesAreRefusedWhereTheDictionaryDeclaresNone) {
   EXPECT_EQ(value(0x1600, 1), 0x20000108U);
 }
 
+TEST_F(PdoParameters, OnlyTheDummyEntriesTheDictionaryDeclaresMayBeMapped) {
+  od::Definition onlyUnsigned8 = gen::service_objects::kDefinition;
+  onlyUnsigned8.dummyUsage = 1U << 0x0005U;  // [DummyUsage] Dummy0005=1, the others 0
+  const od::ObjectDictionary dictionary(onlyUnsigned8, &od_.values);
+  EXPECT_EQ(PdoMap::checkEntry(dictionary, 0x00050008U, PdoDirection::kReceive), AbortCode::kNone);
+  EXPECT_EQ(PdoMap::checkEntry(dictionary, 0x00050010U, PdoDirection::kReceive),
+            AbortCode::kParameterIncompatible);
+  EXPECT_EQ(PdoMap::checkEntry(dictionary, 0x00050008U, PdoDirection::kTransmit),
+            AbortCode::kNotMappable);
+  for (const uint32_t other : {0x00020008U, 0x00030010U, 0x00040020U, 0x00060010U, 0x00070020U}) {
+    EXPECT_EQ(PdoMap::checkEntry(dictionary, other, PdoDirection::kReceive),
+              AbortCode::kNotMappable)
+        << std::hex << other;
+  }
+}
+
 TEST_F(PdoParameters, TheNumberOfEntriesMustFitAndMapSomething) {
   invalidate(0x1400, 0x205);
   EXPECT_EQ(write(pdos_, 0x1600, 0, 0, 1), AbortCode::kNone);

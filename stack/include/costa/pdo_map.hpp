@@ -37,7 +37,8 @@ class PdoMap {
   /// Checks one mapping value for `direction`: kNoObject / kNoSubIndex (no such entry),
   /// kNotMappable (entry not mappable in this direction), kParameterIncompatible (length not a
   /// whole entry). Dummy entries (indices 0x0002..0x0007, the integer data types) are accepted
-  /// for RPDOs only. A value of 0 is accepted (an unused entry). O(log objects).
+  /// for RPDOs only, and only those the dictionary's dummyUsage (its EDS's [DummyUsage]) names;
+  /// the others are kNotMappable. A value of 0 is accepted (an unused entry). O(log objects).
   static AbortCode checkEntry(const od::ObjectDictionary& dictionary, uint32_t value,
                               PdoDirection direction) noexcept;
 
