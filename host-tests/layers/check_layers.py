@@ -14,7 +14,8 @@
            stack/src, another device's)
 
 and that the freestanding parts (od/, stack/, the port interfaces, the devices' directories)
-include no system header beyond the freestanding ones. Prints one line per violation and exits 1 when there is any.
+include no system header beyond the freestanding ones. Prints one line per violation and exits
+1 when there is any.
 `--self-test` plants violations in a scratch tree and checks that each one is reported.
 """
 import argparse
@@ -119,10 +120,15 @@ def violations(root):
             for header in check_file(root, path, allowed, freestanding, device, found):
                 if device and '/' not in header and not (path.parent / header).is_file():
                     shared.add(header)
-    for header in sorted(shared):
+    checked = set()
+    while shared:  # and the targets/ headers those include in turn
+        header = min(shared)
+        shared.discard(header)
+        checked.add(header)
         path = root / 'targets' / header
         if path.is_file():
-            check_file(root, path, device_may_include, True, True, found)
+            included = check_file(root, path, device_may_include, True, True, found)
+            shared.update(h for h in included if '/' not in h and h not in checked)
     return found
 
 
@@ -140,7 +146,8 @@ def self_test():
         'targets/dev/dev_quoted.cpp': '#include "string.h"\n',
         'targets/dev/dev_other.cpp': '#include "other_target.hpp"\n',
         'targets/dev/dev_dots.cpp': '#include "costa/port/memory/../linux/clock.hpp"\n',
-        'targets/shared.hpp': '#include <stdio.h>\n',
+        'targets/shared.hpp': '#include <stdio.h>\n#include "shared2.hpp"\n',
+        'targets/shared2.hpp': '#include "costa/port/linux/monotonic_clock.hpp"\n',
     }
     clean = {
         'port/linux/src/ok.cpp': '#include "costa/port/can_frame.hpp"\n#include <stdio.h>\n',
