@@ -22,7 +22,7 @@ namespace costa::fuzz {
 ///  * every process() call: its deadline is not in the past, and one equal to now is not asked
 ///    for without end (1000 immediate calls in a row).
 /// Time advances like the in-process test bus: from deadline to deadline, process() at each.
-/// After 100000 process() calls the input ends with the event that made them (its checks run),
+/// After 10000 process() calls the input ends with the event that made them (its checks run),
 /// so that long waits with a fast timer keep every input short.
 /// Returns "" when every check passed, else the first violation with the event and time.
 /// With `trace`, appends one line per event and per transmitted frame (costa_fuzz_replay

@@ -194,22 +194,26 @@ TEST_F(NodeContract, AnErrorBeyondTheConditionTableStillSendsItsEmcyAndIsCounted
   EXPECT_TRANSCRIPT("tx 081 [8] 00 00 00 00 00 00 00 00");
 }
 
-/// The example's dictionary with RPDO1's first mapping default (0x20000020) changed to
-/// `mapping`: a definition whose default cannot be resolved, as a stored or generated table
-/// could hold one that no SDO write would accept.
+/// The example's dictionary with a PDO's mapping default (`mappingIndex`:`subIndex`, whose
+/// default is `original`) changed to `mapping`: a definition whose default cannot be resolved,
+/// as a stored or generated table could hold one that no SDO write would accept.
 class PatchedExample {
  public:
-  explicit PatchedExample(uint32_t mapping) : definition_(gen::example::kDefinition) {
+  PatchedExample(uint16_t mappingIndex, uint8_t subIndex, uint32_t original, uint32_t mapping)
+      : definition_(gen::example::kDefinition) {
     gen::example::Values values{};
     const od::ObjectDictionary dictionary(gen::example::kDefinition, &values);
-    const size_t offset = dictionary.find(0x1600, 1).offset();
+    const size_t offset = dictionary.find(mappingIndex, subIndex).offset();
     defaults_.assign(definition_.defaults, definition_.defaults + definition_.defaultCount);
+    bool patched = false;
     for (od::DefaultValue& value : defaults_) {
       if (value.offset == offset) {
-        EXPECT_EQ(value.value, 0x20000020U);
+        EXPECT_EQ(value.value, original);
         value.value = mapping;
+        patched = true;
       }
     }
+    EXPECT_TRUE(patched);
     definition_.defaults = defaults_.data();
   }
   const od::Definition& definition() const { return definition_; }
@@ -222,7 +226,7 @@ class PatchedExample {
 using ExampleDictionaryBus = DictionaryNodeBus<gen::example::Values, gen::example::Capacity>;
 
 TEST(NodeContractMapping, AnUnresolvableMappingEmptiesThePdoAndIsCounted) {
-  const PatchedExample patched(0x30000020);  // 0x3000 does not exist
+  const PatchedExample patched(0x1600, 1, 0x20000020, 0x30000020);  // 0x3000 does not exist
   NodeSettings settings;
   settings.nodeId = 1;
   ExampleDictionaryBus bus(patched.definition(), settings);
@@ -259,6 +263,48 @@ TEST(NodeContractMapping, AnUnresolvableMappingEmptiesThePdoAndIsCounted) {
             "");
   EXPECT_EQ(bus.node().dictionary().readUnsigned(0x2000, 0, 0), 10000U);
   EXPECT_EQ(bus.node().statistics().unresolvableMappings, 2U);
+}
+
+TEST(NodeContractMapping, AnUnresolvableTpdoMappingEmptiesThePdoAndIsCounted) {
+  // TPDO1 (0x181) maps 0x2001:00 (UNSIGNED32) and 0x2011:00 (UNSIGNED16).
+  // Its second entry cannot be resolved: the PDO maps neither, not the first alone.
+  const PatchedExample patched(0x1A00, 2, 0x20110010, 0x30000010);  // 0x3000 does not exist
+  NodeSettings settings;
+  settings.nodeId = 1;
+  ExampleDictionaryBus bus(patched.definition(), settings);
+  EXPECT_EQ(bus.node().statistics().unresolvableMappings, 1U);
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    rx 601 [8] 40 00 1A 02 00 00 00 00   # the mapping reads as configured
+    tx 581 [8] 43 00 1A 02 10 00 00 30
+    rx 601 [8] 2F 00 18 02 01 00 00 00   # TPDO1 at every SYNC
+    tx 581 [8] 60 00 18 02 00 00 00 00
+    rx 000 [2] 01 01
+    rx 080 [0]                           # SYNC: the PDO is empty, as one that maps nothing
+    tx 181 [0]
+  )",
+                     bus),
+            "");
+  // The master repairs the mapping: TPDO1 sends its six bytes. Every configuration of the PDO
+  // while its mapping could not be resolved counted once: at the reset, at the write of its
+  // transmission type and at its invalidation.
+  EXPECT_EQ(playText(R"(
+    rx 601 [8] 23 00 18 01 81 01 00 80   # invalidate TPDO1
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 601 [8] 2F 00 1A 00 00 00 00 00
+    tx 581 [8] 60 00 1A 00 00 00 00 00
+    rx 601 [8] 23 00 1A 02 10 00 11 20
+    tx 581 [8] 60 00 1A 02 00 00 00 00
+    rx 601 [8] 2F 00 1A 00 02 00 00 00
+    tx 581 [8] 60 00 1A 00 00 00 00 00
+    rx 601 [8] 23 00 18 01 81 01 00 00
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 080 [0]
+    tx 181 [6] xx xx xx xx xx xx         # uptime (seconds), temperature
+  )",
+                     bus),
+            "");
+  EXPECT_EQ(bus.node().statistics().unresolvableMappings, 3U);
 }
 
 }  // namespace
