@@ -225,12 +225,29 @@ class PatchedExample {
 
 using ExampleDictionaryBus = DictionaryNodeBus<gen::example::Values, gen::example::Capacity>;
 
+/// The example, node-id 1, powered on over a PatchedExample (same arguments).
+class PatchedExampleNode {
+ public:
+  PatchedExampleNode(uint16_t mappingIndex, uint8_t subIndex, uint32_t original, uint32_t mapping)
+      : patched_(mappingIndex, subIndex, original, mapping),
+        bus_(patched_.definition(), settings()) {}
+  ExampleDictionaryBus& bus() { return bus_; }
+  uint32_t unresolvableMappings() { return bus_.node().statistics().unresolvableMappings; }
+
+ private:
+  static NodeSettings settings() {
+    NodeSettings s;
+    s.nodeId = 1;
+    return s;
+  }
+  PatchedExample patched_;
+  ExampleDictionaryBus bus_;
+};
+
 TEST(NodeContractMapping, AnUnresolvableMappingEmptiesThePdoAndIsCounted) {
-  const PatchedExample patched(0x1600, 1, 0x20000020, 0x30000020);  // 0x3000 does not exist
-  NodeSettings settings;
-  settings.nodeId = 1;
-  ExampleDictionaryBus bus(patched.definition(), settings);
-  EXPECT_EQ(bus.node().statistics().unresolvableMappings, 1U);
+  PatchedExampleNode patched(0x1600, 1, 0x20000020, 0x30000020);  // 0x3000 does not exist
+  ExampleDictionaryBus& bus = patched.bus();
+  EXPECT_EQ(patched.unresolvableMappings(), 1U);
   EXPECT_EQ(playText(R"(
     tx 701 [1] 00
     rx 601 [8] 40 00 16 01 00 00 00 00   # the mapping reads as configured
@@ -262,17 +279,15 @@ TEST(NodeContractMapping, AnUnresolvableMappingEmptiesThePdoAndIsCounted) {
                      bus),
             "");
   EXPECT_EQ(bus.node().dictionary().readUnsigned(0x2000, 0, 0), 10000U);
-  EXPECT_EQ(bus.node().statistics().unresolvableMappings, 2U);
+  EXPECT_EQ(patched.unresolvableMappings(), 2U);
 }
 
 TEST(NodeContractMapping, AnUnresolvableTpdoMappingEmptiesThePdoAndIsCounted) {
   // TPDO1 (0x181) maps 0x2001:00 (UNSIGNED32) and 0x2011:00 (UNSIGNED16).
   // Its second entry cannot be resolved: the PDO maps neither, not the first alone.
-  const PatchedExample patched(0x1A00, 2, 0x20110010, 0x30000010);  // 0x3000 does not exist
-  NodeSettings settings;
-  settings.nodeId = 1;
-  ExampleDictionaryBus bus(patched.definition(), settings);
-  EXPECT_EQ(bus.node().statistics().unresolvableMappings, 1U);
+  PatchedExampleNode patched(0x1A00, 2, 0x20110010, 0x30000010);  // 0x3000 does not exist
+  ExampleDictionaryBus& bus = patched.bus();
+  EXPECT_EQ(patched.unresolvableMappings(), 1U);
   EXPECT_EQ(playText(R"(
     tx 701 [1] 00
     rx 601 [8] 40 00 1A 02 00 00 00 00   # the mapping reads as configured
@@ -304,7 +319,7 @@ TEST(NodeContractMapping, AnUnresolvableTpdoMappingEmptiesThePdoAndIsCounted) {
   )",
                      bus),
             "");
-  EXPECT_EQ(bus.node().statistics().unresolvableMappings, 3U);
+  EXPECT_EQ(patched.unresolvableMappings(), 3U);
 }
 
 }  // namespace
