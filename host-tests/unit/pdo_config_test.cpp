@@ -92,6 +92,30 @@ TEST_F(PdoConfig, MappingEntryChecks) {
   )");
 }
 
+// A COB-ID, mapping count or mapping entry written with the wrong length gets the dictionary's
+// length abort, not the abort of a PDO rule its bytes would break as a value of that length,
+// and changes nothing.
+TEST_F(PdoConfig, AParameterOfTheWrongLengthIsRefusedByItsLength) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 2B 00 14 01 01 02 00 A0   # RPDO1 COB-ID (UNSIGNED32) in 2 bytes (as 4: 29-bit)
+    tx 581 [8] 80 00 14 01 13 00 07 06
+    rx 601 [8] 2B 00 18 02 01 00 00 00   # TPDO1 type (UNSIGNED8) in 2 bytes
+    tx 581 [8] 80 00 18 02 12 00 07 06
+    rx 601 [8] 23 02 1A 00 09 00 00 00   # TPDO3 mapping count (UNSIGNED8) in 4 bytes (9)
+    tx 581 [8] 80 02 1A 00 12 00 07 06
+    rx 601 [8] 2F 02 1A 00 00 00 00 00   # TPDO3 mapping disabled
+    tx 581 [8] 60 02 1A 00 00 00 00 00
+    rx 601 [8] 2B 02 1A 01 00 30 00 00   # a mapping entry (UNSIGNED32) in 2 bytes
+    tx 581 [8] 80 02 1A 01 13 00 07 06
+    rx 601 [8] 40 00 14 01 00 00 00 00
+    tx 581 [8] 43 00 14 01 01 02 00 00
+    rx 601 [8] 40 00 18 02 00 00 00 00
+    tx 581 [8] 4F 00 18 02 FF 00 00 00
+    rx 601 [8] 40 02 1A 01 00 00 00 00
+    tx 581 [8] 43 02 1A 01 20 00 00 20
+  )");
+}
+
 TEST_F(PdoConfig, EnablingAMappingChecksItsLength_06040042) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2F 02 1A 00 00 00 00 00

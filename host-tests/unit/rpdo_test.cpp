@@ -35,6 +35,19 @@ TEST_F(Rpdo, TooShortIsNotAppliedAndRaisesEmcy8210) {
   EXPECT_EQ(value(0x2000, 0), 20000U);
 }
 
+TEST_F(Rpdo, ConfiguringThePdoAgainClearsItsLengthError) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 000 [2] 01 01
+    rx 201 [4] 10 27 00 00
+    tx 081 [8] 10 82 11 00 00 00 00 00   # 0x8210
+    rx 601 [8] 23 00 14 01 01 02 00 80   # invalidate RPDO1
+    tx 581 [8] 60 00 14 01 00 00 00 00
+    tx 081 [8] 00 00 00 00 00 00 00 00   # the error of the old configuration no longer applies
+    rx 601 [8] 40 01 10 00 00 00 00 00
+    tx 581 [8] 4F 01 10 00 00 00 00 00
+  )");
+}
+
 TEST_F(Rpdo, TooLongIsAppliedAndRaisesEmcy8220) {
   EXPECT_TRANSCRIPT(R"(
     rx 000 [2] 01 01

@@ -14,6 +14,11 @@ constexpr const char* kEnableTpdo3 = R"(
     tx 581 [8] 60 02 18 01 00 00 00 00
 )";
 
+constexpr const char* kTpdo3Type252 = R"(
+    rx 601 [8] 2F 02 18 02 FC 00 00 00   # TPDO3 type 252 (synchronous, on RTR only)
+    tx 581 [8] 60 02 18 02 00 00 00 00
+)";
+
 TEST_F(Tpdo, EventDrivenOnApplicationEvent) {
   EXPECT_TRANSCRIPT("rx 000 [2] 01 01\nsilence");
   withNode([](Node& node) { node.markChanged(0x2001, 0); });
@@ -173,11 +178,7 @@ TEST_F(Tpdo, SynchronousAcyclicOnlyAfterAnEvent) {
 }
 
 TEST_F(Tpdo, SyncRtrOnlySendsWhatTheSyncSampled) {
-  EXPECT_TRANSCRIPT(std::string(R"(
-    rx 601 [8] 2F 02 18 02 FC 00 00 00   # TPDO3 type 252
-    tx 581 [8] 60 02 18 02 00 00 00 00
-  )") + kEnableTpdo3 +
-                    R"(
+  EXPECT_TRANSCRIPT(std::string(kTpdo3Type252) + kEnableTpdo3 + R"(
     rx 000 [2] 01 01
     rx 080 [0]                           # samples setpoint 1000
     silence
@@ -188,6 +189,29 @@ TEST_F(Tpdo, SyncRtrOnlySendsWhatTheSyncSampled) {
     rx 080 [0]
     rx 381 [0] RTR
     tx 381 [4] D0 07 00 00
+  )");
+}
+
+// Until the first SYNC after entering operational has sampled it, a remote request sends the
+// value as it is then, as type 253 does; entering operational again forgets an earlier sample.
+TEST_F(Tpdo, SyncRtrOnlySendsTheCurrentValueUntilTheFirstSync) {
+  EXPECT_TRANSCRIPT(std::string(kTpdo3Type252) + kEnableTpdo3 + R"(
+    rx 000 [2] 01 01
+    rx 381 [0] RTR                       # no SYNC yet: setpoint 1000 as it is now
+    tx 381 [4] E8 03 00 00
+    rx 601 [8] 23 00 20 00 D0 07 00 00   # setpoint 2000
+    tx 581 [8] 60 00 20 00 00 00 00 00
+    rx 381 [0] RTR
+    tx 381 [4] D0 07 00 00
+    rx 080 [0]                           # samples 2000
+    rx 601 [8] 23 00 20 00 B8 0B 00 00   # setpoint 3000
+    tx 581 [8] 60 00 20 00 00 00 00 00
+    rx 381 [0] RTR
+    tx 381 [4] D0 07 00 00
+    rx 000 [2] 80 01                     # pre-operational, then operational again
+    rx 000 [2] 01 01
+    rx 381 [0] RTR                       # the sample of 2000 is gone: 3000
+    tx 381 [4] B8 0B 00 00
   )");
 }
 
