@@ -283,7 +283,7 @@ TEST(NodeContractMapping, AnUnresolvableMappingEmptiesThePdoAndIsCounted) {
 }
 
 TEST(NodeContractMapping, AnUnresolvableTpdoMappingEmptiesThePdoAndIsCounted) {
-  // TPDO1 (0x181) maps 0x2001:00 (UNSIGNED32) and 0x2011:00 (UNSIGNED16).
+  // TPDO1 (0x181) maps 0x2001:00 (UNSIGNED32) and 0x2011:00 (INTEGER16).
   // Its second entry cannot be resolved: the PDO maps neither, not the first alone.
   PatchedExampleNode patched(0x1A00, 2, 0x20110010, 0x30000010);  // 0x3000 does not exist
   ExampleDictionaryBus& bus = patched.bus();
@@ -300,6 +300,7 @@ TEST(NodeContractMapping, AnUnresolvableTpdoMappingEmptiesThePdoAndIsCounted) {
   )",
                      bus),
             "");
+  EXPECT_EQ(patched.unresolvableMappings(), 2U);  // at the reset and at the type's write
   // The master repairs the mapping: TPDO1 sends its six bytes. Every configuration of the PDO
   // while its mapping could not be resolved counted once: at the reset, at the write of its
   // transmission type and at its invalidation.

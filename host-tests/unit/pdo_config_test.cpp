@@ -94,7 +94,8 @@ TEST_F(PdoConfig, MappingEntryChecks) {
 
 // A COB-ID, mapping count or mapping entry written with the wrong length gets the dictionary's
 // length abort, not the abort of a PDO rule its bytes would break as a value of that length,
-// and changes nothing.
+// and changes nothing. (The transmission type is checked by its value first, so that a master
+// that writes it as a wider type hears what is wrong with the value; 1 breaks no rule.)
 TEST_F(PdoConfig, AParameterOfTheWrongLengthIsRefusedByItsLength) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 2B 00 14 01 01 02 00 A0   # RPDO1 COB-ID (UNSIGNED32) in 2 bytes (as 4: 29-bit)
@@ -103,6 +104,8 @@ TEST_F(PdoConfig, AParameterOfTheWrongLengthIsRefusedByItsLength) {
     tx 581 [8] 80 00 18 02 12 00 07 06
     rx 601 [8] 23 02 1A 00 09 00 00 00   # TPDO3 mapping count (UNSIGNED8) in 4 bytes (9)
     tx 581 [8] 80 02 1A 00 12 00 07 06
+    rx 601 [8] 40 02 1A 00 00 00 00 00   # still one entry
+    tx 581 [8] 4F 02 1A 00 01 00 00 00
     rx 601 [8] 2F 02 1A 00 00 00 00 00   # TPDO3 mapping disabled
     tx 581 [8] 60 02 1A 00 00 00 00 00
     rx 601 [8] 2B 02 1A 01 00 30 00 00   # a mapping entry (UNSIGNED32) in 2 bytes

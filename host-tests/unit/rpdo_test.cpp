@@ -35,7 +35,7 @@ TEST_F(Rpdo, TooShortIsNotAppliedAndRaisesEmcy8210) {
   EXPECT_EQ(value(0x2000, 0), 20000U);
 }
 
-TEST_F(Rpdo, ConfiguringThePdoAgainClearsItsLengthError) {
+TEST_F(Rpdo, InvalidatingThePdoClearsItsLengthError) {
   EXPECT_TRANSCRIPT(R"(
     rx 000 [2] 01 01
     rx 201 [4] 10 27 00 00

@@ -1,7 +1,9 @@
 // The SRDO mapping's length rule through wire frames (CiA 304): at most 8 bytes of normal data,
-// each mapped with its inverted copy. The example's SRDO mapping objects hold two pairs, too few
-// to pass 8 bytes; host-tests/data/srdo_long.eds has three (0x1381:01..06) and 0x2000, an
-// UNSIGNED32. SRDO 1 is not valid (direction 0), so its mapping may be written.
+// each mapped with its inverted copy. The example cannot show it: its SRDO mapping objects hold
+// two pairs, and its one entry longer than 4 bytes (0x2004:05) cannot be mapped by an RPDO,
+// which a mapping written while its SRDO has no direction must allow (0x06040041 answers).
+// host-tests/data/srdo_long.eds has three pairs (0x1381:01..06) and 0x2000, an UNSIGNED32.
+// SRDO 1 is not valid (direction 0), so its mapping may be written.
 #include "dictionary_node_bus.hpp"
 #include "in_process_bus.hpp"
 #include "srdo_long_od.hpp"
