@@ -131,6 +131,42 @@ TEST_F(DriveTest, ProfilePositionBySdo) {
             "");
 }
 
+TEST_F(DriveTest, ASetPointDuringAMoveWaitsForTheMoveToEnd) {
+  ASSERT_EQ(enable(), "");
+  EXPECT_EQ(play(R"(
+    rx 601 [8] 2F 60 60 00 01 00 00 00
+    tx 581 [8] 60 60 60 00 00 00 00 00
+    tx 181 [3] 37 04 01
+    rx 601 [8] 23 7A 60 00 E8 03 00 00   # target 1000
+    tx 581 [8] 60 7A 60 00 00 00 00 00
+    rx 601 [8] 2B 40 60 00 1F 00 00 00   # new set-point, bit 5 clear
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    tx 181 [3] 37 10 01
+    rx 601 [8] 2B 40 60 00 0F 00 00 00
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    tx 181 [3] 37 00 01
+    rx 601 [8] 23 7A 60 00 D0 07 00 00   # target 2000 while the axis moves to 1000
+    tx 581 [8] 60 7A 60 00 00 00 00 00
+    rx 601 [8] 2B 40 60 00 1F 00 00 00   # new set-point, bit 5 clear: it waits
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    tx 181 [3] 37 10 01                  # acknowledged all the same
+    rx 601 [8] 2B 40 60 00 0F 00 00 00
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    tx 181 [3] 37 00 01
+  )"),
+            "");
+  EXPECT_EQ(bus_.axis().last.position, 1000);  // the first move goes on
+  bus_.axis().arrive();
+  bus_.axisMoved();
+  // At 1000 the waiting set-point starts at once: bit 10 stays clear, no TPDO.
+  EXPECT_EQ(play(""), "");
+  EXPECT_EQ(bus_.axis().last.motion, Motion::kPosition);
+  EXPECT_EQ(bus_.axis().last.position, 2000);
+  bus_.axis().arrive();
+  bus_.axisMoved();
+  EXPECT_EQ(play("tx 181 [3] 37 04 01"), "");  // target reached
+}
+
 TEST_F(DriveTest, RelativeSetPointsAddToThePreviousOne) {
   ASSERT_EQ(enable(), "");
   bus_.axis().current.position = 100;
@@ -300,6 +336,40 @@ TEST_F(DriveTest, HomingStartAndAttained) {
   bus_.axis().current.atRest = true;
   bus_.axisMoved();
   EXPECT_EQ(play("tx 181 [3] 37 24 06"), "");  // homing error (13), at rest
+}
+
+TEST_F(DriveTest, AHaltInterruptsHoming) {
+  ASSERT_EQ(enable(), "");
+  EXPECT_EQ(play(R"(
+    rx 601 [8] 2F 60 60 00 06 00 00 00
+    tx 581 [8] 60 60 60 00 00 00 00 00
+    tx 181 [3] 37 04 06
+    rx 601 [8] 2B 40 60 00 1F 00 00 00   # homing operation start
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    tx 181 [3] 37 00 06                  # in progress
+    rx 601 [8] 2B 40 60 00 1F 01 00 00   # halt (8)
+    tx 581 [8] 60 40 60 00 00 00 00 00
+  )"),
+            "");
+  EXPECT_EQ(bus_.axis().last.motion, Motion::kStop);
+  bus_.axis().arrive();
+  bus_.axisMoved();
+  EXPECT_EQ(play(R"(
+    tx 181 [3] 37 04 06                  # interrupted: 13 and 12 clear, 10 set
+    rx 601 [8] 2B 40 60 00 1F 00 00 00   # the halt ends; bit 4 held is no new start
+    tx 581 [8] 60 40 60 00 00 00 00 00
+  )"),
+            "");
+  EXPECT_EQ(bus_.axis().last.motion, Motion::kStop);
+  EXPECT_EQ(play(R"(
+    rx 601 [8] 2B 40 60 00 0F 00 00 00
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    rx 601 [8] 2B 40 60 00 1F 00 00 00   # a new start
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    tx 181 [3] 37 00 06
+  )"),
+            "");
+  EXPECT_EQ(bus_.axis().last.motion, Motion::kHoming);
 }
 
 TEST_F(DriveTest, InterpolatedPositionAtEachSync) {
