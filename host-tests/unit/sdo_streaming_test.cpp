@@ -22,6 +22,9 @@ class RecordingHook : public ObjectHook {
                        uint8_t* destination, size_t capacity, size_t* produced,
                        size_t* totalSize) noexcept override {
     *totalSize = valueSize;
+    if (capacity == 0U && refuseSize != AbortCode::kNone) {
+      return refuseSize;  // the size query at the start of an upload
+    }
     if (capacity > 0U && offset + capacity > refuseReadFrom) {
       return AbortCode::kHardwareError;
     }
@@ -63,6 +66,7 @@ class RecordingHook : public ObjectHook {
   size_t valueSize = 10;
   size_t shrinkTo = SIZE_MAX;
   size_t refuseReadFrom = SIZE_MAX;
+  AbortCode refuseSize = AbortCode::kNone;
 };
 
 /// A hook that keeps every default.
@@ -181,6 +185,23 @@ TEST_F(SdoStreaming, ReadRefusedByTheHook) {
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 40 08 20 00 00 00 00 00
     tx 581 [8] 80 08 20 00 00 00 06 06
+  )");
+}
+
+TEST_F(SdoStreaming, AHookWithNothingToReadAbortsTheInitiate_08000024) {
+  hook_.refuseSize = AbortCode::kNoData;
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 40 08 20 00 00 00 00 00   # upload
+    tx 581 [8] 80 08 20 00 24 00 00 08
+    rx 601 [8] A4 08 20 00 7F 00 00 00   # block upload
+    tx 581 [8] 80 08 20 00 24 00 00 08
+    rx 601 [8] 40 08 20 00 00 00 00 00   # nothing of either is left behind
+    tx 581 [8] 80 08 20 00 24 00 00 08
+  )");
+  hook_.refuseSize = AbortCode::kNone;
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 40 08 20 00 00 00 00 00
+    tx 581 [8] 41 08 20 00 0A 00 00 00
   )");
 }
 
