@@ -296,5 +296,23 @@ TEST_F(FeaturesTest, EveryBuildHasNmtHeartbeatSdoAndPdos) {
             "");
 }
 
+// Node::setPendingBitTiming() is the application's, whatever LSS and storage: its timing becomes
+// the one in use at the next reset communication (not before; a reset node would first read
+// the configured or stored timing again).
+TEST_F(FeaturesTest, AnApplicationsPendingBitTimingAppliesAtResetCommunicationInEveryBuild) {
+  ASSERT_EQ(play("tx 701 [1] 00"), "");
+  const LssBitTiming before = bus_->node().bitTiming();
+  LssBitTiming pending;
+  pending.tableIndex = before.tableIndex == 2U ? 3U : 2U;  // 500 or 250 kbit/s
+  bus_->node().setPendingBitTiming(pending);
+  EXPECT_EQ(bus_->node().bitTiming(), before);  // not yet
+  EXPECT_EQ(play(R"(
+    rx 000 [2] 82 01                    # reset communication
+    tx 701 [1] 00
+  )"),
+            "");
+  EXPECT_EQ(bus_->node().bitTiming(), pending);
+}
+
 }  // namespace
 }  // namespace costa::test

@@ -153,6 +153,14 @@ TEST_F(DriveTest, ASetPointDuringAMoveWaitsForTheMoveToEnd) {
     rx 601 [8] 2B 40 60 00 0F 00 00 00
     tx 581 [8] 60 40 60 00 00 00 00 00
     tx 181 [3] 37 00 01
+    rx 601 [8] 23 7A 60 00 B8 0B 00 00   # target 3000
+    tx 581 [8] 60 7A 60 00 00 00 00 00
+    rx 601 [8] 2B 40 60 00 1F 00 00 00   # one waits at a time: 3000 replaces 2000
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    tx 181 [3] 37 10 01
+    rx 601 [8] 2B 40 60 00 0F 00 00 00
+    tx 581 [8] 60 40 60 00 00 00 00 00
+    tx 181 [3] 37 00 01
   )"),
             "");
   EXPECT_EQ(bus_.axis().last.position, 1000);  // the first move goes on
@@ -161,7 +169,7 @@ TEST_F(DriveTest, ASetPointDuringAMoveWaitsForTheMoveToEnd) {
   // At 1000 the waiting set-point starts at once: bit 10 stays clear, no TPDO.
   EXPECT_EQ(play(""), "");
   EXPECT_EQ(bus_.axis().last.motion, Motion::kPosition);
-  EXPECT_EQ(bus_.axis().last.position, 2000);
+  EXPECT_EQ(bus_.axis().last.position, 3000);
   bus_.axis().arrive();
   bus_.axisMoved();
   EXPECT_EQ(play("tx 181 [3] 37 04 01"), "");  // target reached

@@ -188,15 +188,15 @@ TEST_F(SdoStreaming, ReadRefusedByTheHook) {
   )");
 }
 
-TEST_F(SdoStreaming, AHookWithNothingToReadAbortsTheInitiate_08000024) {
-  hook_.refuseSize = AbortCode::kNoData;
+TEST_F(SdoStreaming, AHookThatRefusesTheSizeAbortsTheInitiateWithItsCode) {
+  hook_.refuseSize = AbortCode::kCannotStoreState;  // a code the server never makes up itself
   EXPECT_TRANSCRIPT(R"(
     rx 601 [8] 40 08 20 00 00 00 00 00   # upload
-    tx 581 [8] 80 08 20 00 24 00 00 08
+    tx 581 [8] 80 08 20 00 22 00 00 08
     rx 601 [8] A4 08 20 00 7F 00 00 00   # block upload
-    tx 581 [8] 80 08 20 00 24 00 00 08
+    tx 581 [8] 80 08 20 00 22 00 00 08
     rx 601 [8] 40 08 20 00 00 00 00 00   # nothing of either is left behind
-    tx 581 [8] 80 08 20 00 24 00 00 08
+    tx 581 [8] 80 08 20 00 22 00 00 08
   )");
   hook_.refuseSize = AbortCode::kNone;
   EXPECT_TRANSCRIPT(R"(

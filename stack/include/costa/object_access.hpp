@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/features.hpp"
 #include "costa/hook_registry.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/od/object_dictionary.hpp"
@@ -12,7 +13,8 @@
 
 namespace costa {
 
-/// Told of every successful remote write (SDO or RPDO), after the hook has run.
+/// Told of every successful remote write (SDO or RPDO), after the hook has run. The stack's one
+/// observer is the save on write of parameter storage (ObjectAccess::setObserver()).
 class WriteObserver {
  public:
   /// `changed` is false when the entry held the same bytes before. A code other than kNone
@@ -85,8 +87,10 @@ class ObjectAccess {
   AbortCode check(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
   /// Writes a located entry through its hook (or the plain dictionary).
   AbortCode write(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept {
-    if (observer_ != nullptr) {
-      return writeObserved(ref, data, length);
+    if constexpr (features::kParameterStorage) {
+      if (observer_ != nullptr) {
+        return writeObserved(ref, data, length);
+      }
     }
     ObjectHook* hook = hookOf(ref.index());
     return hook != nullptr ? hook->write(dictionary_, ref, data, length)
@@ -101,9 +105,11 @@ class ObjectAccess {
                         size_t length, bool last, size_t indicatedSize) noexcept;
   void abortWriteStream(const od::EntryRef& ref, AbortCode reason) noexcept;
 
-  /// Tells `observer` (may be null) of every successful remote write.
+  /// Tells `observer` (may be null) of every successful remote write. The one observer is the
+  /// save on write of parameter storage: compiled out (features::kParameterStorage), writes
+  /// are never observed, and the code that would tell an observer is left out of the image.
   void setObserver(WriteObserver* observer) noexcept { observer_ = observer; }
-  bool observed() const noexcept { return observer_ != nullptr; }
+  bool observed() const noexcept { return features::kParameterStorage && observer_ != nullptr; }
 
  private:
   /// The behaviour of an entry no hook covers.
