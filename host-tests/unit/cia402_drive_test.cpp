@@ -37,6 +37,18 @@ class DriveTest : public ::testing::Test {
     )");
   }
 
+  /// Homing mode (6), then a rising bit 4 starts homing.
+  std::string startHoming() {
+    return play(R"(
+      rx 601 [8] 2F 60 60 00 06 00 00 00
+      tx 581 [8] 60 60 60 00 00 00 00 00
+      tx 181 [3] 37 04 06                  # homing not started: 10 set
+      rx 601 [8] 2B 40 60 00 1F 00 00 00   # homing operation start
+      tx 581 [8] 60 40 60 00 00 00 00 00
+      tx 181 [3] 37 00 06                  # in progress
+    )");
+  }
+
   DriveBus bus_;
 };
 
@@ -316,15 +328,7 @@ TEST_F(DriveTest, FaultReactionFaultAndFaultReset) {
 
 TEST_F(DriveTest, HomingStartAndAttained) {
   ASSERT_EQ(enable(), "");
-  EXPECT_EQ(play(R"(
-    rx 601 [8] 2F 60 60 00 06 00 00 00
-    tx 581 [8] 60 60 60 00 00 00 00 00
-    tx 181 [3] 37 04 06                  # homing not started: 10 set
-    rx 601 [8] 2B 40 60 00 1F 00 00 00   # homing operation start
-    tx 581 [8] 60 40 60 00 00 00 00 00
-    tx 181 [3] 37 00 06                  # in progress
-  )"),
-            "");
+  EXPECT_EQ(startHoming(), "");
   EXPECT_EQ(bus_.axis().last.motion, Motion::kHoming);
   EXPECT_EQ(bus_.axis().last.homingMethod, 35);  // 0x6098
   bus_.axis().current.homing = cia402::HomingState::kAttained;
@@ -348,13 +352,8 @@ TEST_F(DriveTest, HomingStartAndAttained) {
 
 TEST_F(DriveTest, AHaltInterruptsHoming) {
   ASSERT_EQ(enable(), "");
+  ASSERT_EQ(startHoming(), "");
   EXPECT_EQ(play(R"(
-    rx 601 [8] 2F 60 60 00 06 00 00 00
-    tx 581 [8] 60 60 60 00 00 00 00 00
-    tx 181 [3] 37 04 06
-    rx 601 [8] 2B 40 60 00 1F 00 00 00   # homing operation start
-    tx 581 [8] 60 40 60 00 00 00 00 00
-    tx 181 [3] 37 00 06                  # in progress
     rx 601 [8] 2B 40 60 00 1F 01 00 00   # halt (8)
     tx 581 [8] 60 40 60 00 00 00 00 00
   )"),
