@@ -379,6 +379,21 @@ TEST_F(DriveTest, AHaltInterruptsHoming) {
   EXPECT_EQ(bus_.axis().last.motion, Motion::kHoming);
 }
 
+TEST_F(DriveTest, HomingGoesOnWhenBit4Falls) {
+  ASSERT_EQ(enable(), "");
+  ASSERT_EQ(startHoming(), "");
+  EXPECT_EQ(play(R"(
+    rx 601 [8] 2B 40 60 00 0F 00 00 00   # bit 4 falls: homing goes on, the status stays
+    tx 581 [8] 60 40 60 00 00 00 00 00
+  )"),
+            "");
+  EXPECT_EQ(bus_.axis().last.motion, Motion::kHoming);
+  bus_.axis().current.homing = cia402::HomingState::kAttained;
+  bus_.axis().current.atRest = true;
+  bus_.axisMoved();
+  EXPECT_EQ(play("tx 181 [3] 37 14 06"), "");  // attained (12) and reached (10)
+}
+
 TEST_F(DriveTest, InterpolatedPositionAtEachSync) {
   ASSERT_EQ(enable(), "");
   EXPECT_EQ(play(R"(
