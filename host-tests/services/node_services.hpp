@@ -96,7 +96,7 @@ struct NodeServices {
   RpdoChannel rpdos[2];
   TpdoChannel tpdos[2];
   PdoEngine pdos;
-  StoredParameters stored;
+  StoredParametersChoice stored;
   BitTimingSwitch bitTiming;
   RouteEntry routes[8];
   FrameRouter router;

@@ -71,7 +71,6 @@ set(COSTA_STACK_CORE_SOURCES
   sdo_server_upload.cpp
   sdo_value_reader.cpp
   sdo_value_writer.cpp
-  stored_parameters.cpp
   sync_service.cpp
   tpdo_channel.cpp
   transmit_path.cpp)
@@ -86,7 +85,8 @@ set(COSTA_STACK_SDO_SERVERS_SOURCES sdo_servers.cpp)
 set(COSTA_STACK_SAFETY_SOURCES safety_service.cpp srdo_channel.cpp srdo_configuration.cpp)
 set(COSTA_STACK_INDICATORS_SOURCES indicators.cpp)
 set(COSTA_STACK_PARAMETER_STORAGE_SOURCES
-  parameter_store.cpp parameter_store_layout.cpp store_commands.cpp stored_image.cpp)
+  parameter_store.cpp parameter_store_layout.cpp store_commands.cpp stored_image.cpp
+  stored_parameters.cpp)
 
 function(costa_add_stack_library target)
   cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "FEATURES")

@@ -174,6 +174,11 @@ bool Node::routeOne(const RouteEntry& entry, const CanFrame& frame) noexcept {
 bool Node::errorControlFrame(const CanFrame& frame) noexcept {
   // 0x701..0x77F: heartbeats of other nodes and node guarding requests (CiA 301 restricts
   // these CAN-IDs, so no route uses them).
+  // cppcheck-suppress knownConditionTrueFalse ; two independent switches that may agree
+  if constexpr (!features::kHeartbeatConsumer && !features::kNodeGuarding) {
+    (void)frame;
+    return false;  // nothing here takes them
+  }
   const uint8_t id = nmt_.nodeId();
   return frame.id - (cob::kErrorControlBase + 1U) < 127U && id != cob::kLssUnconfigured &&
          nmt_.state() != NmtState::kInitialising && errorControl_.onFrame(frame, id);

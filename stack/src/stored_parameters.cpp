@@ -1,3 +1,4 @@
+// The node's stored parameters (built with parameter storage only: features::kParameterStorage).
 #include "costa/stored_parameters.hpp"
 
 namespace costa {
@@ -17,8 +18,7 @@ StoredParameters::StoredParameters(od::ObjectDictionary& dictionary, const NodeS
       store_(dictionary, settings.storage != nullptr ? *settings.storage : noStorage_,
              settings.storageSlotAlignment),
       commands_(settings.storage != nullptr ? &store_ : nullptr, settings.storeAllGroups,
-                settings.restoreAllGroups,
-                features::kParameterStorage && settings.saveParametersOnWrite) {
+                settings.restoreAllGroups, settings.saveParametersOnWrite) {
   commands_.setRestoreAllListener(this);
 }
 
@@ -31,7 +31,7 @@ void StoredParameters::layOut() noexcept {
 }
 
 ParameterStore* StoredParameters::store() noexcept {
-  return ready_ ? parameterStoreOf(store_) : nullptr;
+  return ready_ ? &store_ : nullptr;
 }
 
 void StoredParameters::remember(uint8_t group, StoreResult result) noexcept {
@@ -44,9 +44,6 @@ void StoredParameters::loadLssConfiguration(bool powerOn, uint8_t* nodeId,
                                             LssBitTiming* timing) noexcept {
   *nodeId = settings_.nodeId;
   *timing = settings_.bitTiming;
-  if constexpr (!features::kParameterStorage) {
-    return;
-  }
   if (!ready_) {
     return;
   }
@@ -65,9 +62,6 @@ void StoredParameters::loadLssConfiguration(bool powerOn, uint8_t* nodeId,
 }
 
 void StoredParameters::loadGroups(uint32_t groups) noexcept {
-  if constexpr (!features::kParameterStorage) {
-    return;
-  }
   if (!ready_) {
     return;
   }
@@ -83,9 +77,6 @@ void StoredParameters::loadGroups(uint32_t groups) noexcept {
 }
 
 void StoredParameters::reportInvalid() noexcept {
-  if constexpr (!features::kParameterStorage) {
-    return;  // nothing is ever loaded, so nothing is found damaged
-  }
   for (size_t i = 0; i < invalidCount_; ++i) {
     const Invalid invalid = invalid_[i];
     listeners_.notify([&invalid](NodeEvents& listener) {
@@ -111,13 +102,10 @@ LssStoreResult StoredParameters::storeLssConfiguration(uint8_t nodeId,
 }
 
 WriteObserver* StoredParameters::autoSave() noexcept {
-  return features::kParameterStorage && settings_.saveParametersOnWrite ? this : nullptr;
+  return settings_.saveParametersOnWrite ? this : nullptr;
 }
 
 AbortCode StoredParameters::onWritten(const od::EntryRef& ref, bool changed) noexcept {
-  if constexpr (!features::kParameterStorage) {
-    return AbortCode::kNone;  // (never called: autoSave() is null)
-  }
   if (!changed || ref.group() == od::kGroupNone || !ready_) {
     return AbortCode::kNone;
   }
@@ -125,9 +113,6 @@ AbortCode StoredParameters::onWritten(const od::EntryRef& ref, bool changed) noe
 }
 
 bool StoredParameters::onRestoreAll() noexcept {
-  if constexpr (!features::kParameterStorage) {
-    return true;  // (never called: there are no store commands)
-  }
   if (!settings_.restoreAllIncludesLss || !ready_) {
     return true;
   }

@@ -15,9 +15,7 @@
 #include "costa/lss_slave.hpp"
 #include "costa/node_guarding.hpp"
 #include "costa/object_hook.hpp"
-#include "costa/parameter_store.hpp"
 #include "costa/safety_service.hpp"
-#include "costa/store_commands.hpp"
 #include "costa/time_service.hpp"
 
 namespace costa {
@@ -165,83 +163,6 @@ class AbsentLssSlave {
   uint8_t activeNodeId() const noexcept { return cob::kLssUnconfigured; }
   uint8_t pendingNodeId() const noexcept { return cob::kLssUnconfigured; }
   bool valid() const noexcept { return true; }
-};
-
-/// Parameter storage compiled out: a store that is never laid out, so nothing is ever loaded
-/// or saved.
-class AbsentParameterStore {
- public:
-  AbsentParameterStore(od::ObjectDictionary& dictionary, NvStorage& storage,
-                       size_t slotAlignment) noexcept {
-    (void)dictionary;
-    (void)storage;
-    (void)slotAlignment;
-  }
-  bool reserveRecord(uint8_t recordId, size_t maxLength) noexcept {
-    (void)recordId;
-    (void)maxLength;
-    return false;
-  }
-  bool layOut() noexcept { return false; }
-  bool hasGroup(uint8_t group) const noexcept {
-    (void)group;
-    return false;
-  }
-  StoreResult save(uint8_t group) noexcept {
-    (void)group;
-    return StoreResult::kNotLaidOut;
-  }
-  StoreResult load(uint8_t group) noexcept {
-    (void)group;
-    return StoreResult::kNotLaidOut;
-  }
-  StoreResult saveGroups(uint32_t groups) noexcept {
-    (void)groups;
-    return StoreResult::kNotLaidOut;
-  }
-  StoreResult saveRecord(uint8_t recordId, const uint8_t* data, size_t length) noexcept {
-    (void)recordId;
-    (void)data;
-    (void)length;
-    return StoreResult::kNotLaidOut;
-  }
-  // NOLINTNEXTLINE(readability-non-const-parameter): the signature of ParameterStore::loadRecord
-  StoreResult loadRecord(uint8_t recordId, uint8_t* buffer, size_t capacity,
-                         size_t* length) noexcept {
-    (void)recordId;
-    (void)buffer;
-    (void)capacity;
-    *length = 0;
-    return StoreResult::kNotLaidOut;
-  }
-  StoreResult invalidateRecord(uint8_t recordId) noexcept {
-    (void)recordId;
-    return StoreResult::kNotLaidOut;
-  }
-};
-
-/// The parameter store behind a node's ParameterStore member: null when compiled out.
-inline ParameterStore* parameterStoreOf(ParameterStore& store) noexcept {
-  return &store;
-}
-inline ParameterStore* parameterStoreOf(AbsentParameterStore& store) noexcept {
-  (void)store;
-  return nullptr;
-}
-
-/// 0x1010/0x1011 with parameter storage compiled out: they do not exist.
-class AbsentStoreCommands final : public AbsentService {
- public:
-  AbsentStoreCommands(AbsentParameterStore* store, uint32_t saveAllGroups,
-                      uint32_t restoreAllGroups, bool savesOnWrite) noexcept {
-    (void)store;
-    (void)saveAllGroups;
-    (void)restoreAllGroups;
-    (void)savesOnWrite;
-  }
-  void setRestoreAllListener(StoreCommands::RestoreAllListener* listener) noexcept {
-    (void)listener;
-  }
 };
 
 /// TIME compiled out: TIME frames are not routed, 0x1012 does not exist, no clock of day.

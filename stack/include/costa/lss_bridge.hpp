@@ -21,8 +21,9 @@ class NmtStateMachine;
 
 class LssBridge final : public LssSlaveHost {
  public:
-  LssBridge(const NodeSettings& settings, BitTimingSwitch& bitTiming, StoredParameters& stored,
-            const NodeListeners& listeners, NmtStateMachine& nmt) noexcept
+  LssBridge(const NodeSettings& settings, BitTimingSwitch& bitTiming,
+            StoredParametersChoice& stored, const NodeListeners& listeners,
+            NmtStateMachine& nmt) noexcept
       : settings_(settings),
         bitTiming_(bitTiming),
         stored_(stored),
@@ -40,7 +41,7 @@ class LssBridge final : public LssSlaveHost {
  private:
   const NodeSettings& settings_;
   BitTimingSwitch& bitTiming_;
-  StoredParameters& stored_;
+  StoredParametersChoice& stored_;
   const NodeListeners& listeners_;
   NmtStateMachine& nmt_;
 };

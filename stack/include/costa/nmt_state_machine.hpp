@@ -66,7 +66,7 @@ class NmtStateMachine {
     TimeServiceChoice& time;
     PdoEngine& pdos;
     ErrorControl& errorControl;
-    StoredParameters& stored;
+    StoredParametersChoice& stored;
     BitTimingSwitch& bitTiming;
     LssSlaveService& lss;
     FrameRouter& router;

@@ -285,7 +285,7 @@ class Node {
   EmcyConsumerChoice emcyConsumer_;
   SafetyServiceChoice safety_;
   PdoEngine pdos_;
-  StoredParameters stored_;
+  StoredParametersChoice stored_;
   BitTimingSwitch bitTiming_;
   FrameRouter router_;
   ErrorControl errorControl_;

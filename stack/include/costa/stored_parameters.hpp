@@ -1,8 +1,9 @@
 // A node's stored parameters: its ParameterStore over NodeSettings::storage, the loads of each
 // reset, the reports of what could not be loaded, 0x1010/0x1011, the public save, the save on
 // every write of devices that keep parameters without a store command, and the CiA 305 LSS
-// record (node-id and bit timing). Compiled out (features::kParameterStorage) it keeps nothing
-// and 0x1010/0x1011 do not exist.
+// record (node-id and bit timing). Compiled out (features::kParameterStorage), the node holds
+// AbsentStoredParameters instead (StoredParametersChoice): it keeps nothing, and 0x1010/0x1011
+// do not exist.
 //
 // Context: the one that runs the node. No allocation. Loads and saves cost what the medium
 // costs (NvStorage); they happen at start(), at resets and on explicit requests only, never
@@ -25,11 +26,6 @@ namespace costa {
 
 class StoredParameters final : private StoreCommands::RestoreAllListener, private WriteObserver {
  public:
-  using ParameterStoreService =
-      ServiceIf<features::kParameterStorage, ParameterStore, AbsentParameterStore>;
-  using StoreCommandsService =
-      ServiceIf<features::kParameterStorage, StoreCommands, AbsentStoreCommands>;
-
   static constexpr uint8_t kLssRecord = 1;  ///< ParameterStore record of the LSS configuration
   /// Bytes of that record: pending node-id, bit timing table selector, bit timing table index.
   static constexpr size_t kLssRecordLength = 3;
@@ -64,7 +60,7 @@ class StoredParameters final : private StoreCommands::RestoreAllListener, privat
   LssStoreResult storeLssConfiguration(uint8_t nodeId, LssBitTiming timing) noexcept;
 
   /// The hook of 0x1010/0x1011.
-  ObjectHook& commands() noexcept { return *serviceHook(commands_); }
+  ObjectHook& commands() noexcept { return commands_; }
   /// The observer that saves a written entry's group (NodeSettings::saveParametersOnWrite),
   /// or null.
   WriteObserver* autoSave() noexcept;
@@ -79,8 +75,8 @@ class StoredParameters final : private StoreCommands::RestoreAllListener, privat
   const NodeSettings& settings_;
   const NodeListeners& listeners_;
   NoStorage noStorage_;
-  ParameterStoreService store_;
-  StoreCommandsService commands_;
+  ParameterStore store_;
+  StoreCommands commands_;
   bool ready_ = false;
   struct Invalid {
     uint8_t group;
@@ -89,5 +85,44 @@ class StoredParameters final : private StoreCommands::RestoreAllListener, privat
   Invalid invalid_[8] = {};
   size_t invalidCount_ = 0;
 };
+
+/// Parameter storage compiled out: nothing is laid out, loaded or saved, the node-id and bit
+/// timing are the settings', and 0x1010/0x1011 do not exist. Its calls vanish when inlined.
+class AbsentStoredParameters final : public AbsentService {
+ public:
+  AbsentStoredParameters(od::ObjectDictionary& dictionary, const NodeSettings& settings,
+                         const NodeListeners& listeners) noexcept
+      : settings_(settings) {
+    (void)dictionary;
+    (void)listeners;
+  }
+  void layOut() noexcept {}
+  ParameterStore* store() noexcept { return nullptr; }
+  void loadLssConfiguration(bool powerOn, uint8_t* nodeId, LssBitTiming* timing) noexcept {
+    (void)powerOn;
+    *nodeId = settings_.nodeId;
+    *timing = settings_.bitTiming;
+  }
+  void loadGroups(uint32_t groups) noexcept { (void)groups; }
+  void reportInvalid() noexcept {}
+  StoreResult save(uint32_t groups) noexcept {
+    (void)groups;
+    return StoreResult::kNotLaidOut;
+  }
+  LssStoreResult storeLssConfiguration(uint8_t nodeId, LssBitTiming timing) noexcept {
+    (void)nodeId;
+    (void)timing;
+    return LssStoreResult::kNotSupported;
+  }
+  ObjectHook& commands() noexcept { return *serviceHook(*this); }
+  WriteObserver* autoSave() noexcept { return nullptr; }
+
+ private:
+  const NodeSettings& settings_;
+};
+
+/// The node's stored parameters: StoredParameters, or its stand-in without parameter storage.
+using StoredParametersChoice =
+    ServiceIf<features::kParameterStorage, StoredParameters, AbsentStoredParameters>;
 
 }  // namespace costa

@@ -11,10 +11,11 @@
 namespace costa {
 
 /// A queued frame and the time after which it is no longer worth sending (synchronous PDOs
-/// whose SYNC window has passed); kNever for most frames.
+/// whose SYNC window has passed); kNever for most frames. TxQueue::push() sets both, and a slot
+/// is never read before: its initial value is zero, so that a block of slots needs no set-up.
 struct QueuedFrame {
   CanFrame frame;
-  Microseconds expiry = kNever;
+  Microseconds expiry = 0;
 };
 
 /// Ring buffer over caller-owned storage. Push never blocks: when full, the frame is dropped and
