@@ -52,6 +52,7 @@ get_filename_component(COSTA_STACK_DIR "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 
 # Every build of the stack has these.
 set(COSTA_STACK_CORE_SOURCES
+  cob_ids.cpp
   emcy_producer.cpp
   error_control.cpp
   frame_router.cpp

@@ -51,11 +51,8 @@ AbortCode EmcyConsumer::write(od::ObjectDictionary& dictionary, const od::EntryR
                               const uint8_t* data, size_t length) noexcept {
   if (ref.subIndex() != 0U && length == 4U) {
     const uint32_t value = loadU32(data);
-    if ((value & (kExtended | kReserved)) != 0U) {
-      return AbortCode::kInvalidValue;  // 11-bit CAN-IDs only
-    }
-    if ((value & kNotValid) == 0U && cob::isRestrictedCanId(value & 0x7FFU)) {
-      return AbortCode::kInvalidValue;  // CiA 301 7.3.5
+    if (!cob::acceptableCobId(value, (value & kNotValid) == 0U, false, 0)) {
+      return AbortCode::kInvalidValue;  // a valid entry's CAN-ID may change at any time
     }
   }
   const AbortCode written = dictionary.write(ref, data, length);

@@ -225,14 +225,8 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
     const uint32_t current = cobId();
     const bool wasValid = (current & 0x80000000U) == 0U;
     const bool willBeValid = (value & 0x80000000U) == 0U;
-    if ((value & 0x20000000U) != 0U || (value & 0x1FFFF800U) != 0U) {
+    if (!cob::acceptableCobId(value, willBeValid, wasValid && willBeValid, current & 0x7FFU)) {
       return AbortCode::kInvalidValue;
-    }
-    if (wasValid && willBeValid && (value & 0x7FFU) != (current & 0x7FFU)) {
-      return AbortCode::kInvalidValue;
-    }
-    if (willBeValid && cob::isRestrictedCanId(value & 0x7FFU)) {
-      return AbortCode::kInvalidValue;  // CiA 301 7.3.5: NMT, SDO, error control, LSS
     }
   }
   return dictionary.write(ref, data, length);

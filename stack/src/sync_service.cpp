@@ -81,15 +81,12 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
                              const uint8_t* data, size_t length) noexcept {
   const uint16_t index = ref.index();
   if (index == kCobIdIndex && length == 4U) {
+    // SYNC has no valid bit: a restricted CAN-ID is refused even to consume (0x601 is SDO); a
+    // producer stops producing before it changes the CAN-ID.
     const uint32_t value = loadU32(data);
-    if ((value & 0x20000000U) != 0U || (value & 0x1FFFF800U) != 0U) {
-      return AbortCode::kInvalidValue;  // 29-bit SYNC is not supported
-    }
-    if (cob::isRestrictedCanId(value & 0x7FFU)) {
-      return AbortCode::kInvalidValue;  // CiA 301 7.3.5: not even to consume (0x601 is SDO)
-    }
-    if (producer_ && (value & 0x40000000U) != 0U && (value & 0x7FFU) != canId_) {
-      return AbortCode::kInvalidValue;  // stop producing before changing the CAN-ID
+    const bool producing = producer_ && (value & 0x40000000U) != 0U;
+    if (!cob::acceptableCobId(value, true, producing, canId_)) {
+      return AbortCode::kInvalidValue;
     }
   }
   if (index == kOverflowIndex && length == 1U) {

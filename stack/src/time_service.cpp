@@ -117,16 +117,11 @@ void TimeService::encode(const TimeOfDay& time, uint8_t* bytes) noexcept {
 AbortCode TimeService::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                              const uint8_t* data, size_t length) noexcept {
   if (ref.index() == kCobIdIndex && length == 4U) {
+    // TIME has no valid bit: a restricted CAN-ID is always refused; bits 31 and 30 (consumer,
+    // producer) are cleared before the CAN-ID changes.
     const uint32_t value = loadU32(data);
-    if ((value & 0x20000000U) != 0U || (value & 0x1FFFF800U) != 0U) {
-      return AbortCode::kInvalidValue;  // 29-bit TIME is not supported
-    }
-    if (cob::isRestrictedCanId(value & 0x7FFU)) {
-      return AbortCode::kInvalidValue;  // CiA 301 7.3.5
-    }
-    const bool inUse = consumer_ || producer_;
-    if (inUse && (value & 0x7FFU) != canId_) {
-      return AbortCode::kInvalidValue;  // clear bits 31 and 30 before changing the CAN-ID
+    if (!cob::acceptableCobId(value, true, consumer_ || producer_, canId_)) {
+      return AbortCode::kInvalidValue;
     }
   }
   const AbortCode written = dictionary.write(ref, data, length);

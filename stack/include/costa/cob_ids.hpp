@@ -27,6 +27,14 @@ inline constexpr bool isRestrictedCanId(uint32_t canId) noexcept {
          (canId >= 0x6E0U && canId <= 0x6FFU) || canId >= 0x701U;
 }
 
+/// The rules of CiA 301 that every write of an 11-bit COB-ID shares (SYNC, TIME, EMCY, EMCY
+/// consumer): bit 29 (a 29-bit CAN-ID) and bits 11..28 clear; a CAN-ID the object uses is not
+/// restricted (7.3.5); where the object says so, the CAN-ID does not change.
+/// used: the object uses the written CAN-ID (it is valid, or the object has no valid bit);
+/// kept: this write may not change the CAN-ID (each object has its own rule for when, e.g. EMCY
+/// while it is valid and stays valid); currentCanId: the CAN-ID it keeps.
+bool acceptableCobId(uint32_t value, bool used, bool kept, uint32_t currentCanId) noexcept;
+
 /// Valid node-ids for a configured node.
 inline constexpr bool isValidNodeId(uint8_t id) noexcept {
   return id >= 1U && id <= 127U;

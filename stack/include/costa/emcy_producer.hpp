@@ -96,7 +96,7 @@ class EmcyProducer : public ObjectHook {
 
   /// 0x1003 (writing 0 to sub-index 0 clears the history; any other value aborts 0x06090030, any
   /// other length 0x06070012/0x06070013), 0x1014 (the CAN-ID of a valid EMCY cannot change; 29-bit
-  /// refused; a valid EMCY cannot have a restricted CAN-ID, cob::isRestrictedCanId).
+  /// refused; a valid EMCY cannot have a restricted CAN-ID: cob::acceptableCobId).
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
 

@@ -57,7 +57,7 @@ class SyncService : public ObjectHook {
   /// The SYNC CAN-ID (consumer and producer).
   uint32_t canId() const noexcept { return canId_; }
 
-  /// 0x1005 (29-bit and restricted CAN-IDs refused, cob::isRestrictedCanId; the CAN-ID cannot
+  /// 0x1005 (29-bit and restricted CAN-IDs refused, cob::acceptableCobId; the CAN-ID cannot
   /// change while producing), 0x1019 (0 or 2..240, only while the period is 0). An accepted
   /// write takes effect at once: 0x1007 changes the window alone; one of 0x1005, 0x1006 or
   /// 0x1019 configures the service from the write (configure()), except that production that

@@ -1,0 +1,13 @@
+// The COB-ID write rules that SYNC, TIME, EMCY and the EMCY consumer share (CiA 301).
+#include "costa/cob_ids.hpp"
+
+namespace costa::cob {
+
+bool acceptableCobId(uint32_t value, bool used, bool kept, uint32_t currentCanId) noexcept {
+  constexpr uint32_t kExtendedOrReserved = 0x3FFFF800U;  // bit 29 and bits 11..28
+  const uint32_t canId = value & 0x7FFU;
+  return (value & kExtendedOrReserved) == 0U && !(used && isRestrictedCanId(canId)) &&
+         !(kept && canId != currentCanId);
+}
+
+}  // namespace costa::cob
