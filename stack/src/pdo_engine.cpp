@@ -1,7 +1,5 @@
 #include "costa/pdo_engine.hpp"
 
-#include <type_traits>
-
 #include "costa/frame_router.hpp"
 #include "costa/od/little_endian.hpp"
 
@@ -185,15 +183,23 @@ TpdoChannel* PdoEngine::findTpdo(uint16_t communicationIndex) noexcept {
   return nullptr;
 }
 
-template <typename Channel>
-AbortCode PdoEngine::writeParameter(Channel& channel, bool mapping,
-                                    od::ObjectDictionary& dictionary, const od::EntryRef& ref,
-                                    const uint8_t* data, size_t length) noexcept {
-  constexpr bool kReceive = std::is_same_v<Channel, RpdoChannel>;
+AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
+                           const uint8_t* data, size_t length) noexcept {
+  const uint16_t index = ref.index();
+  const bool mapping = (index >= 0x1600U && index <= 0x17FFU) || index >= 0x1A00U;
+  const auto communicationIndex = static_cast<uint16_t>(mapping ? index - kMappingOffset : index);
+  const bool receive = index < kTpdoCommunicationFirst;
+  // The channel the parameter belongs to: an RPDO's or a TPDO's, or none (a plain entry).
+  RpdoChannel* rpdo = receive ? findRpdo(communicationIndex) : nullptr;
+  TpdoChannel* tpdo = receive ? nullptr : findTpdo(communicationIndex);
+  if (rpdo == nullptr && tpdo == nullptr) {
+    return dictionary.write(ref, data, length);
+  }
+  const bool valid = rpdo != nullptr ? rpdo->valid() : tpdo->valid();
+  const uint32_t canId = rpdo != nullptr ? rpdo->canId() : tpdo->canId();
   const AbortCode verdict =
-      mapping ? checkMappingWrite(kReceive, channel.valid(), ref, data, length)
-              : checkCommunicationWrite(kReceive, channel.valid(), channel.canId(), ref.subIndex(),
-                                        data, length);
+      mapping ? checkMappingWrite(receive, valid, ref, data, length)
+              : checkCommunicationWrite(receive, valid, canId, ref.subIndex(), data, length);
   if (verdict != AbortCode::kNone) {
     return verdict;
   }
@@ -201,31 +207,15 @@ AbortCode PdoEngine::writeParameter(Channel& channel, bool mapping,
   if (written != AbortCode::kNone) {
     return written;
   }
-  if (!channel.configure(context_)) {
+  const bool resolved = rpdo != nullptr ? rpdo->configure(context_) : tpdo->configure(context_);
+  if (!resolved) {
     ++unresolvableMappings_;
   }
-  if constexpr (!kReceive) {
-    if (running_) {
-      channel.restart(context_, context_.clock.now);
-    }
+  if (tpdo != nullptr && running_) {
+    tpdo->restart(context_, context_.clock.now);
   }
   context_.routes.invalidate();
   return AbortCode::kNone;
-}
-
-AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
-                           const uint8_t* data, size_t length) noexcept {
-  const uint16_t index = ref.index();
-  const bool mapping = (index >= 0x1600U && index <= 0x17FFU) || index >= 0x1A00U;
-  const auto communicationIndex = static_cast<uint16_t>(mapping ? index - kMappingOffset : index);
-  if (index < kTpdoCommunicationFirst) {
-    RpdoChannel* rpdo = findRpdo(communicationIndex);
-    return rpdo != nullptr ? writeParameter(*rpdo, mapping, dictionary, ref, data, length)
-                           : dictionary.write(ref, data, length);
-  }
-  TpdoChannel* tpdo = findTpdo(communicationIndex);
-  return tpdo != nullptr ? writeParameter(*tpdo, mapping, dictionary, ref, data, length)
-                         : dictionary.write(ref, data, length);
 }
 
 }  // namespace costa

@@ -102,10 +102,6 @@ class PdoEngine : public ObjectHook {
  private:
   RpdoChannel* findRpdo(uint16_t communicationIndex) noexcept;
   TpdoChannel* findTpdo(uint16_t communicationIndex) noexcept;
-  /// write() for a parameter of `channel` (an RpdoChannel or a TpdoChannel).
-  template <typename Channel>
-  AbortCode writeParameter(Channel& channel, bool mapping, od::ObjectDictionary& dictionary,
-                           const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
   AbortCode checkCommunicationWrite(bool receive, bool currentlyValid, uint32_t currentCanId,
                                     uint8_t subIndex, const uint8_t* data,
                                     size_t length) const noexcept;
