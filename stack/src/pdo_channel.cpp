@@ -19,6 +19,10 @@ PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept {
   return cob;
 }
 
+namespace {
+
+// The mapping values of the PDO whose communication parameter is at `communicationIndex` (see
+// resolvePdoMapping); returns how many were written to `values`.
 size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdoMappings& fixed,
                          uint16_t communicationIndex, uint32_t* values) noexcept {
   const auto mappingIndex = static_cast<uint16_t>(communicationIndex + 0x200U);
@@ -46,6 +50,16 @@ size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdo
     }
   }
   return 0;
+}
+
+}  // namespace
+
+bool resolvePdoMapping(PdoContext& context, uint16_t communicationIndex, PdoDirection direction,
+                       PdoMap* map) noexcept {
+  uint32_t values[PdoMap::kMaxEntries] = {};
+  const size_t count = readMappingValues(context.access.dictionary(), context.staticMappings,
+                                         communicationIndex, values);
+  return map->resolve(context.access, values, count, direction) == AbortCode::kNone;
 }
 
 }  // namespace costa

@@ -22,14 +22,7 @@ bool RpdoChannel::configure(PdoContext& context) noexcept {
 }
 
 bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
-  uint32_t values[PdoMap::kMaxEntries] = {};
-  const size_t count =
-      readMappingValues(context.access.dictionary(), context.staticMappings, index_, values);
-  const bool resolved =
-      map_.resolve(context.access, values, count, PdoDirection::kReceive) == AbortCode::kNone;
-  if (!resolved) {
-    map_.clear();
-  }
+  const bool resolved = resolvePdoMapping(context, index_, PdoDirection::kReceive, &map_);
   updateQuietDlc();
   return resolved;
 }

@@ -22,14 +22,7 @@ bool TpdoChannel::configure(PdoContext& context) noexcept {
 }
 
 bool TpdoChannel::resolveMapping(PdoContext& context) noexcept {
-  uint32_t values[PdoMap::kMaxEntries] = {};
-  const size_t count =
-      readMappingValues(context.access.dictionary(), context.staticMappings, index_, values);
-  if (map_.resolve(context.access, values, count, PdoDirection::kTransmit) != AbortCode::kNone) {
-    map_.clear();
-    return false;
-  }
-  return true;
+  return resolvePdoMapping(context, index_, PdoDirection::kTransmit, &map_);
 }
 
 void TpdoChannel::start(PdoContext& context, Microseconds now, bool initialEvent) noexcept {

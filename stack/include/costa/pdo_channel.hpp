@@ -58,10 +58,11 @@ struct PdoCobId {
 
 PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept;
 
-/// Reads the mapping of the PDO whose communication parameter is at `communicationIndex`: the
-/// mapping object (index + 0x200) when the dictionary has one, else the device's static mapping.
-/// Returns the number of values written to `values` (at most PdoMap::kMaxEntries).
-size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdoMappings& fixed,
-                         uint16_t communicationIndex, uint32_t* values) noexcept;
+/// Resolves into `map` the mapping of the PDO whose communication parameter is at
+/// `communicationIndex`: the mapping object (index + 0x200) when the dictionary has one, else the
+/// device's static mapping (at most PdoMap::kMaxEntries entries of either). False: the mapping
+/// cannot be resolved, and `map` is left empty (PdoMap::resolve).
+bool resolvePdoMapping(PdoContext& context, uint16_t communicationIndex, PdoDirection direction,
+                       PdoMap* map) noexcept;
 
 }  // namespace costa
