@@ -192,11 +192,17 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   // The channel the parameter belongs to: an RPDO's or a TPDO's, or none (a plain entry).
   RpdoChannel* rpdo = receive ? findRpdo(communicationIndex) : nullptr;
   TpdoChannel* tpdo = receive ? nullptr : findTpdo(communicationIndex);
-  if (rpdo == nullptr && tpdo == nullptr) {
+  bool valid = false;
+  uint32_t canId = 0;
+  if (rpdo != nullptr) {
+    valid = rpdo->valid();
+    canId = rpdo->canId();
+  } else if (tpdo != nullptr) {
+    valid = tpdo->valid();
+    canId = tpdo->canId();
+  } else {
     return dictionary.write(ref, data, length);
   }
-  const bool valid = rpdo != nullptr ? rpdo->valid() : tpdo->valid();
-  const uint32_t canId = rpdo != nullptr ? rpdo->canId() : tpdo->canId();
   const AbortCode verdict =
       mapping ? checkMappingWrite(receive, valid, ref, data, length)
               : checkCommunicationWrite(receive, valid, canId, ref.subIndex(), data, length);
@@ -207,12 +213,18 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   if (written != AbortCode::kNone) {
     return written;
   }
-  const bool resolved = rpdo != nullptr ? rpdo->configure(context_) : tpdo->configure(context_);
+  bool resolved = true;
+  if (rpdo != nullptr) {
+    resolved = rpdo->configure(context_);
+  }
+  if (tpdo != nullptr) {
+    resolved = tpdo->configure(context_);
+    if (running_) {
+      tpdo->restart(context_, context_.clock.now);
+    }
+  }
   if (!resolved) {
     ++unresolvableMappings_;
-  }
-  if (tpdo != nullptr && running_) {
-    tpdo->restart(context_, context_.clock.now);
   }
   context_.routes.invalidate();
   return AbortCode::kNone;
