@@ -50,9 +50,10 @@ bool EmcyConsumer::onFrame(const CanFrame& frame, uint8_t entry) noexcept {
 AbortCode EmcyConsumer::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                               const uint8_t* data, size_t length) noexcept {
   if (ref.subIndex() != 0U && length == 4U) {
+    // A valid entry uses its CAN-ID; nothing keeps it from changing (no `kept` rule).
     const uint32_t value = loadU32(data);
     if (!cob::acceptableCobId(value, (value & kNotValid) == 0U, false, 0)) {
-      return AbortCode::kInvalidValue;  // a valid entry's CAN-ID may change at any time
+      return AbortCode::kInvalidValue;
     }
   }
   const AbortCode written = dictionary.write(ref, data, length);
