@@ -6,8 +6,9 @@
 
 namespace costa::test {
 
-NodeSettings BareNodeBus::settings(NvStorage* storage) {
+NodeSettings BareNodeBus::settings(NvStorage* storage, const DeviceProfile& profile) {
   NodeSettings settings;
+  settings.profile = profile;
   settings.nodeId = 1;
   settings.storage = storage;
   settings.lss = true;
@@ -15,7 +16,8 @@ NodeSettings BareNodeBus::settings(NvStorage* storage) {
   return settings;
 }
 
-BareNodeBus::BareNodeBus() : node_(gen::example::kDefinition, can_, settings(&storage_)) {
+BareNodeBus::BareNodeBus(const DeviceProfile& profile)
+    : node_(gen::example::kDefinition, can_, settings(&storage_, profile)) {
   NoAllocationScope scope;
   node_.start(clock_.now());
   runProcess();

@@ -17,8 +17,9 @@ namespace costa::test {
 class BareNodeBus : public TranscriptBus {
  public:
   /// Node-id 1, LSS asked for (bit rates of the CiA 305 table), parameters in a memory
-  /// storage; powered on at the unit tests' virtual power-on time (1 s before the clock wraps).
-  BareNodeBus();
+  /// storage, the given profile (a quirk profile only in a build with them); powered on at the
+  /// unit tests' virtual power-on time (1 s before the clock wraps).
+  explicit BareNodeBus(const DeviceProfile& profile = DeviceProfile{});
 
   void send(const CanFrame& frame) override;
   bool receive(CanFrame* frame, int timeoutMs) override;
@@ -29,7 +30,7 @@ class BareNodeBus : public TranscriptBus {
   Node& node() { return node_; }
 
  private:
-  static NodeSettings settings(NvStorage* storage);
+  static NodeSettings settings(NvStorage* storage, const DeviceProfile& profile);
   /// Runs process() now, and again while it asks for an immediate call.
   void runProcess();
 

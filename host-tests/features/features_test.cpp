@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include "bare_node_bus.hpp"
 #include "costa/features.hpp"
@@ -51,6 +52,7 @@ TEST(FeaturesBuild, IsTheVariantCMakeAskedFor) {
   add(features::kSdoServers, "SDO_SERVERS");
   add(features::kSafety, "SAFETY");
   add(features::kIndicators, "INDICATORS");
+  add(features::kQuirkProfiles, "QUIRK_PROFILES");
   EXPECT_EQ(compiledIn, COSTA_EXPECTED_FEATURES);
 }
 
@@ -293,6 +295,28 @@ TEST_F(FeaturesTest, EveryBuildHasNmtHeartbeatSdoAndPdos) {
     rx 601 [8] 40 00 10 00 00 00 00 00  # device type
     tx 581 [8] 43 00 10 00 xx xx xx xx
   )"),
+            "");
+}
+
+// A quirk profile changes the wire only in a build with quirk profiles. Without them every field
+// of the profile is a constant (there is nothing to set), and the node answers as CiA 301 says.
+TEST(QuirkProfiles, ChangeTheWireOnlyInABuildWithThem) {
+  static_assert((std::is_empty_v<SdoProfile> && std::is_empty_v<PdoProfile> &&
+                 std::is_empty_v<EmcyProfile> && std::is_empty_v<ErrorControlProfile>) ==
+                !features::kQuirkProfiles);
+  static_assert(SdoProfile{}.expeditedUpload == ExpeditedUploadFormat::kSizeIndicated &&
+                SdoProfile{}.shortestRequest == 8U && EmcyProfile{}.errorResetFrame &&
+                PdoProfile{}.cobIdPolarity == PdoCobIdPolarity::kCia301);
+  DeviceProfile profile{};
+#if COSTA_QUIRK_PROFILES
+  profile.sdo.expeditedUpload = ExpeditedUploadFormat::kFourBytesSizeNotIndicated;
+#endif
+  BareNodeBus bus(profile);
+  EXPECT_EQ(playText("tx 701 [1] 00\n"
+                     "rx 601 [8] 40 00 10 00 00 00 00 00  # device type\n" +
+                         lines(features::kQuirkProfiles, "tx 581 [8] 42 00 10 00 xx xx xx xx",
+                               "tx 581 [8] 43 00 10 00 xx xx xx xx"),
+                     bus),
             "");
 }
 

@@ -11,6 +11,7 @@
 #   COSTA_FEATURE_SDO_SERVERS          additional SDO servers (0x1201..0x127F)
 #   COSTA_FEATURE_SAFETY               GFC and SRDOs of CiA 304 (0x1300..0x13FF)
 #   COSTA_FEATURE_INDICATORS           CiA 303-3 RUN and ERROR LED states (costa::Indicators)
+#   COSTA_FEATURE_QUIRK_PROFILES       device profiles other than CiA 301 (NodeSettings::profile)
 #
 # costa_add_stack_library(<target> [FEATURES <feature>...])
 #   A static library of the stack with exactly the listed features (names without the
@@ -28,7 +29,7 @@
 include_guard(GLOBAL)
 
 set(COSTA_OPTIONAL_FEATURES SDO_BLOCK LSS NODE_GUARDING HEARTBEAT_CONSUMER PARAMETER_STORAGE TIME
-  EMCY_CONSUMER SDO_SERVERS SAFETY INDICATORS)
+  EMCY_CONSUMER SDO_SERVERS SAFETY INDICATORS QUIRK_PROFILES)
 
 option(COSTA_FEATURE_SDO_BLOCK "SDO block upload and download (CiA 301)" ON)
 option(COSTA_FEATURE_LSS "LSS slave (CiA 305)" ON)
@@ -40,6 +41,7 @@ option(COSTA_FEATURE_EMCY_CONSUMER "EMCY consumer, object 0x1028 (CiA 301)" ON)
 option(COSTA_FEATURE_SDO_SERVERS "Additional SDO servers, objects 0x1201..0x127F (CiA 301)" ON)
 option(COSTA_FEATURE_SAFETY "GFC and SRDOs, objects 0x1300..0x13FF (CiA 304)" ON)
 option(COSTA_FEATURE_INDICATORS "RUN and ERROR LED states (CiA 303-3)" ON)
+option(COSTA_FEATURE_QUIRK_PROFILES "Device profiles beside CiA 301 (NodeSettings::profile)" ON)
 
 set(COSTA_ENABLED_FEATURES "")
 foreach(feature IN LISTS COSTA_OPTIONAL_FEATURES)
@@ -85,6 +87,9 @@ set(COSTA_STACK_EMCY_CONSUMER_SOURCES emcy_consumer.cpp)
 set(COSTA_STACK_SDO_SERVERS_SOURCES sdo_servers.cpp)
 set(COSTA_STACK_SAFETY_SOURCES safety_service.cpp srdo_channel.cpp srdo_configuration.cpp)
 set(COSTA_STACK_INDICATORS_SOURCES indicators.cpp)
+# The quirk profiles have no sources of their own: without them the profile's fields are
+# constants (costa/profile_choice.hpp), and the services' code for other values folds away.
+set(COSTA_STACK_QUIRK_PROFILES_SOURCES "")
 set(COSTA_STACK_PARAMETER_STORAGE_SOURCES
   parameter_store.cpp parameter_store_layout.cpp store_commands.cpp stored_image.cpp
   stored_parameters.cpp)

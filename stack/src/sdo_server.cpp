@@ -44,7 +44,7 @@ SdoServer::SdoServer(ObjectAccess& access, TransmitPath& tx, const SdoProfile& p
                      Microseconds timeout) noexcept
     : access_(access),
       clock_(clock),
-      channel_(tx, profile.distinguishHighAndLowValues),
+      channel_(tx, profile),
       profile_(profile),
       reader_(access, buffer, bufferSize),
       writer_(access, buffer, bufferSize),

@@ -11,6 +11,9 @@ static_assert(features::kLss,
 static_assert(features::kParameterStorage,
               "the GRA/GRN save parameters with 0x1010 and 0x5999:03 (errata E22): build with "
               "COSTA_FEATURE_PARAMETER_STORAGE=ON");
+static_assert(features::kQuirkProfiles,
+              "the GRA/GRN send their TPDO on entering operational and keep 0x1001 at 0 (errata "
+              "E14, E17): build with COSTA_FEATURE_QUIRK_PROFILES=ON");
 
 namespace {
 

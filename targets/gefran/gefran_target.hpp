@@ -13,6 +13,19 @@
 
 namespace costa::gefran {
 
+/// The GRA/GRN profile: event-driven TPDO sent on entering operational (E17), 0x1001 always 0
+/// (E14), heartbeat only (E48).
+constexpr DeviceProfile profile() noexcept {
+  DeviceProfile p{};
+  // The device needs the quirk profiles (gefran_device.cpp); its header compiles in any tree.
+#if COSTA_QUIRK_PROFILES
+  p.pdo.tpdoOnEnteringOperational = true;
+  p.emcy.reportErrorRegister = false;
+  p.errorControl.nodeGuarding = false;
+#endif
+  return p;
+}
+
 /// What differs between the variants: the generated dictionary and the summary line.
 struct Gra {
   static constexpr const char* kSummary =
@@ -51,9 +64,7 @@ class GefranTarget {
   static constexpr NodeSettings settings() noexcept {
     NodeSettings s;
     s.nodeId = kFactoryNodeId;
-    s.profile.pdo.tpdoOnEnteringOperational = true;
-    s.profile.emcy.reportErrorRegister = false;
-    s.profile.errorControl.nodeGuarding = false;
+    s.profile = profile();
     s.lss = true;
     s.lssBitRates = kListedBitRates;
     s.storeAllGroups = groupBit(od::kGroupCommunication) | groupBit(od::kGroupApplication);

@@ -11,6 +11,9 @@ static_assert(features::kHeartbeatConsumer,
 static_assert(features::kParameterStorage,
               "the M-series joint saves its parameters with 0x2614 (B13): build with "
               "COSTA_FEATURE_PARAMETER_STORAGE=ON");
+static_assert(features::kQuirkProfiles,
+              "the M-series joint has its own heartbeat and TPDO behaviour (mseries_profile.hpp): "
+              "build with COSTA_FEATURE_QUIRK_PROFILES=ON");
 
 namespace {
 

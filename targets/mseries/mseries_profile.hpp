@@ -12,12 +12,15 @@ namespace costa::mseries {
 /// (W6) and no NMT change on a heartbeat timeout (W7), each TPDO n answering RPDO n (W8).
 constexpr DeviceProfile profile() noexcept {
   DeviceProfile p{};
+  // The device needs the quirk profiles (joint_device.cpp); its header compiles in any tree.
+#if COSTA_QUIRK_PROFILES
   p.errorControl.nodeGuarding = false;
   p.errorControl.emcyForErrors = false;
   p.errorControl.errorBehaviourWithoutObject = 1;  // no state change
   p.errorControl.heartbeatWhileError = 0x04;
   p.emcy.sendFrames = false;
   p.pdo.tpdoAnswersRpdo = true;
+#endif
   return p;
 }
 

@@ -5,6 +5,9 @@ namespace costa::santeng {
 static_assert(features::kParameterStorage,
               "the Santeng saves its configuration with 0x2017 (errata D8): build with "
               "COSTA_FEATURE_PARAMETER_STORAGE=ON");
+static_assert(features::kQuirkProfiles,
+              "the Santeng serves short and long SDO requests (errata W2-W4, santeng_profile.hpp): "
+              "build with COSTA_FEATURE_QUIRK_PROFILES=ON");
 
 namespace {
 

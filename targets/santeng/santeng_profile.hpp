@@ -24,10 +24,13 @@ inline constexpr LssBitTiming kDefaultBitTiming{kManufacturerBitTimingTable, 3};
 /// Upload responses indicate the size and errors are CiA 301 aborts (W5): the defaults.
 constexpr DeviceProfile profile() noexcept {
   DeviceProfile p{};
+  // The device needs the quirk profiles (santeng_device.cpp); its header compiles in any tree.
+#if COSTA_QUIRK_PROFILES
   p.sdo.shortestRequest = 4;
   p.sdo.expeditedKeepsLowBytes = true;
   p.sdo.expeditedByCountAlone = true;
   p.errorControl.nodeGuarding = false;
+#endif
   return p;
 }
 

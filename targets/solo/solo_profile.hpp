@@ -29,6 +29,8 @@ inline constexpr StaticPdoMapping kPdoMappings[] = {
 /// through the device error register 0x3020 (S5).
 constexpr DeviceProfile profile() noexcept {
   DeviceProfile p{};
+  // The device needs the quirk profiles (solo_target.cpp); its header compiles in any tree.
+#if COSTA_QUIRK_PROFILES
   p.sdo.expeditedUpload = ExpeditedUploadFormat::kFourBytesSizeNotIndicated;
   p.pdo.cobIdPolarity = PdoCobIdPolarity::kBit31EnablesBit30AllowsRtr;
   p.pdo.tpdoType0 = TpdoType0::kEverySync;
@@ -40,6 +42,7 @@ constexpr DeviceProfile profile() noexcept {
   p.sdo.distinguishHighAndLowValues = false;
   p.emcy.errorResetFrame = false;
   p.errorControl.emcyForErrors = false;
+#endif
   return p;
 }
 

@@ -8,6 +8,9 @@ static_assert(
 static_assert(
     features::kNodeGuarding,
     "the SOLO answers node guarding (errata A12, S5): build with COSTA_FEATURE_NODE_GUARDING=ON");
+static_assert(features::kQuirkProfiles,
+              "the SOLO speaks its own SDO, PDO and EMCY dialect (solo_profile.hpp): build with "
+              "COSTA_FEATURE_QUIRK_PROFILES=ON");
 static_assert(!SoloTarget::settings().lss && SoloTarget::settings().saveParametersOnWrite,
               "the SOLO has no LSS and keeps every M object as it is written");
 

@@ -4,6 +4,8 @@
 
 #include <stdint.h>
 
+#include "costa/profile_choice.hpp"
+
 namespace costa {
 
 /// Layout of an EMCY frame.
@@ -15,16 +17,19 @@ enum class EmcyLayout : uint8_t {
 };
 
 struct EmcyProfile {
-  EmcyLayout layout = EmcyLayout::kCia301;
+  // Member names, also where COSTA_PROFILE_CHOICE makes the fields constants.
+  // NOLINTBEGIN(readability-identifier-naming)
+  COSTA_PROFILE_CHOICE EmcyLayout layout = EmcyLayout::kCia301;
   /// An EMCY with error code 0x0000 when the last error condition clears (CiA 301).
-  bool errorResetFrame = true;
+  COSTA_PROFILE_CHOICE bool errorResetFrame = true;
   /// The error register 0x1001 (and the EMCY's register byte) reflects the active errors. When
   /// false both always read 0 (a device that does not implement the register).
-  bool reportErrorRegister = true;
+  COSTA_PROFILE_CHOICE bool reportErrorRegister = true;
   /// The device sends EMCY frames (CiA 301). When false (a device without an EMCY producer),
   /// error conditions and events still set the error register 0x1001 and the history 0x1003,
   /// and nothing is sent.
-  bool sendFrames = true;
+  COSTA_PROFILE_CHOICE bool sendFrames = true;
+  // NOLINTEND(readability-identifier-naming)
 };
 
 }  // namespace costa

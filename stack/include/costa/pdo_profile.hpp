@@ -4,6 +4,8 @@
 
 #include <stdint.h>
 
+#include "costa/profile_choice.hpp"
+
 namespace costa {
 
 /// Meaning of bits 31 and 30 of a PDO COB-ID (sub-index 1 of 0x1400+/0x1800+).
@@ -41,20 +43,23 @@ struct CanIdRange {
 };
 
 struct PdoProfile {
-  PdoCobIdPolarity cobIdPolarity = PdoCobIdPolarity::kCia301;
-  TpdoType0 tpdoType0 = TpdoType0::kAcyclicOnEvent;
-  TpdoRtrTypes tpdoRtrTypes = TpdoRtrTypes::kCia301;
+  // Member names, also where COSTA_PROFILE_CHOICE makes the fields constants.
+  // NOLINTBEGIN(readability-identifier-naming)
+  COSTA_PROFILE_CHOICE PdoCobIdPolarity cobIdPolarity = PdoCobIdPolarity::kCia301;
+  COSTA_PROFILE_CHOICE TpdoType0 tpdoType0 = TpdoType0::kAcyclicOnEvent;
+  COSTA_PROFILE_CHOICE TpdoRtrTypes tpdoRtrTypes = TpdoRtrTypes::kCia301;
   /// CAN-IDs an RPDO/TPDO may be given in addition to CiA 301's restricted-ID rule.
-  CanIdRange rpdoCanIds{};
-  CanIdRange tpdoCanIds{};
+  COSTA_PROFILE_CHOICE CanIdRange rpdoCanIds{};
+  COSTA_PROFILE_CHOICE CanIdRange tpdoCanIds{};
   /// Event-driven TPDOs (254/255) are sent once when the node enters OPERATIONAL. CiA 301 does
   /// not ask for it (events and the event timer trigger them), so the default is off.
-  bool tpdoOnEnteringOperational = false;
+  COSTA_PROFILE_CHOICE bool tpdoOnEnteringOperational = false;
   /// Every RPDO n the node accepts (of the right length, every entry written or, for a
   /// synchronous RPDO, held for the SYNC) is answered by the event-driven TPDO n (0x1800 + n-1
   /// for 0x1400 + n-1), at reception: a device whose TPDOs reply to its RPDOs. CiA 301 has
   /// no such link.
-  bool tpdoAnswersRpdo = false;
+  COSTA_PROFILE_CHOICE bool tpdoAnswersRpdo = false;
+  // NOLINTEND(readability-identifier-naming)
 };
 
 }  // namespace costa

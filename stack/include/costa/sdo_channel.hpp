@@ -10,16 +10,16 @@
 #include "costa/od/bytes.hpp"
 #include "costa/od/little_endian.hpp"
 #include "costa/port/can_frame.hpp"
+#include "costa/sdo_profile.hpp"
 #include "costa/transmit_path.hpp"
 
 namespace costa {
 
 class SdoChannel {
  public:
-  /// `distinguishHighAndLowValues`: DeviceProfile's choice between 0x06090031/0x06090032 and
-  /// 0x06090030 for values out of range.
-  SdoChannel(TransmitPath& tx, bool distinguishHighAndLowValues) noexcept
-      : tx_(tx), distinguishHighAndLowValues_(distinguishHighAndLowValues) {}
+  /// `profile`: the server's, which outlives the channel (its abort codes for values out of
+  /// range).
+  SdoChannel(TransmitPath& tx, const SdoProfile& profile) noexcept : tx_(tx), profile_(profile) {}
 
   /// Responses on 0x580 + `nodeId` (the default server).
   void setNodeId(uint8_t nodeId) noexcept { canId_ = cob::kSdoTxBase + nodeId; }
@@ -42,7 +42,7 @@ class SdoChannel {
 
   /// Queues an abort frame (CiA 301 7.2.4.3.17).
   void sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept {
-    if (!distinguishHighAndLowValues_ &&
+    if (!profile_.distinguishHighAndLowValues &&
         (code == AbortCode::kValueTooHigh || code == AbortCode::kValueTooLow)) {
       code = AbortCode::kInvalidValue;
     }
@@ -58,7 +58,7 @@ class SdoChannel {
 
  private:
   TransmitPath& tx_;
-  bool distinguishHighAndLowValues_;
+  const SdoProfile& profile_;
   uint32_t canId_ = cob::kSdoTxBase;
 };
 
