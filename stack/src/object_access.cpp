@@ -9,6 +9,20 @@ AbortCode ObjectAccess::check(const od::EntryRef& ref, const uint8_t* data,
   return hookFor(ref).check(dictionary_, ref, data, length);
 }
 
+// Out of line: it has many callers, and expanded into each it costs flash (200 bytes on
+// Cortex-M0+) and, in the expedited download, instructions too.
+AbortCode ObjectAccess::write(const od::EntryRef& ref, const uint8_t* data,
+                              size_t length) noexcept {
+  if constexpr (features::kParameterStorage) {
+    if (observer_ != nullptr) {
+      return writeObserved(ref, data, length);
+    }
+  }
+  ObjectHook* hook = hookOf(ref.index());
+  return hook != nullptr ? hook->write(dictionary_, ref, data, length)
+                         : dictionary_.write(ref, data, length);
+}
+
 AbortCode ObjectAccess::writeObserved(const od::EntryRef& ref, const uint8_t* data,
                                       size_t length) noexcept {
   // Small values are compared before and after, so that the observer can skip unchanged ones.

@@ -12,6 +12,8 @@
 // (NodeMemory::routes). find() is O(routes of one function code); add() O(routes).
 #pragma once
 
+#include "costa/hot_path.hpp"
+
 #include <stddef.h>
 #include <stdint.h>
 
@@ -89,7 +91,7 @@ class FrameRouter {
   static constexpr uint32_t kNoFastId = UINT32_MAX;
 
   /// The node's CAN-IDs changed: rebuild before the next lookup.
-  void invalidate() noexcept {
+  COSTA_SHARED_INLINE void invalidate() noexcept {
     stale_ = true;
     fastId_ = kNoFastId;
     ++changes_;

@@ -4,6 +4,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/hot_path.hpp"
 #include "costa/object_hook.hpp"
 
 namespace costa {
@@ -33,7 +34,7 @@ class HookRegistry {
   }
 
   /// The hook covering `index`, or nullptr.
-  ObjectHook* find(uint16_t index) const noexcept {
+  COSTA_SHARED_INLINE ObjectHook* find(uint16_t index) const noexcept {
     for (size_t i = count_; i > 0U; --i) {
       const HookBinding& binding = bindings_[i - 1U];
       if (index >= binding.first && index <= binding.last) {

@@ -2,6 +2,7 @@
 // which something may be due.
 #pragma once
 
+#include "costa/hot_path.hpp"
 #include "costa/time.hpp"
 
 namespace costa {
@@ -25,9 +26,11 @@ struct NodeClock {
     }
   }
   /// Something may be due at `deadline` (kNever: nothing). O(1).
-  void schedule(Microseconds deadline) noexcept { next = earliest(next, deadline); }
+  COSTA_SHARED_INLINE void schedule(Microseconds deadline) noexcept {
+    next = earliest(next, deadline);
+  }
   /// Something is due at once (atOnce(now): at the instant whose value is kNever's too).
-  void scheduleNow() noexcept { schedule(atOnce(now)); }
+  COSTA_SHARED_INLINE void scheduleNow() noexcept { schedule(atOnce(now)); }
   /// True when `next` has come: process() has work.
   bool due() const noexcept { return reached(now, next); }
 };

@@ -7,6 +7,7 @@
 
 #include "costa/features.hpp"
 #include "costa/hook_registry.hpp"
+#include "costa/hot_path.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/od/object_dictionary.hpp"
 #include "costa/service_objects.hpp"
@@ -50,7 +51,7 @@ class ObjectAccess {
 
   /// The hook behind `index`: an application hook, else the service that owns the object,
   /// else null (the plain dictionary).
-  ObjectHook* hookOf(uint16_t index) const noexcept {
+  COSTA_SHARED_INLINE ObjectHook* hookOf(uint16_t index) const noexcept {
     ObjectHook* hook = hooks_.find(index);
     return hook != nullptr ? hook : services_.find(index);
   }
@@ -86,16 +87,7 @@ class ObjectAccess {
   /// Checks a value as a write of a located entry would, without writing (ObjectHook::check).
   AbortCode check(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
   /// Writes a located entry through its hook (or the plain dictionary).
-  AbortCode write(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept {
-    if constexpr (features::kParameterStorage) {
-      if (observer_ != nullptr) {
-        return writeObserved(ref, data, length);
-      }
-    }
-    ObjectHook* hook = hookOf(ref.index());
-    return hook != nullptr ? hook->write(dictionary_, ref, data, length)
-                           : dictionary_.write(ref, data, length);
-  }
+  AbortCode write(const od::EntryRef& ref, const uint8_t* data, size_t length) noexcept;
 
   /// The streaming functions of the entry's hook (ObjectHook::readStream, writeStream,
   /// abortWriteStream), or their plain defaults when no hook covers the entry.

@@ -16,6 +16,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/hot_path.hpp"
 #include "costa/object_access.hpp"
 #include "costa/od/bytes.hpp"
 #include "costa/od/object_dictionary.hpp"
@@ -62,7 +63,7 @@ class PdoMap {
 
   /// Copies the mapped values into `out` (bytes() bytes), all in one call, so a frame never
   /// mixes two writes of an entry.
-  void pack(const ObjectAccess& access, uint8_t* out) const noexcept {
+  COSTA_SHARED_INLINE void pack(const ObjectAccess& access, uint8_t* out) const noexcept {
     if ((accessMask_ | markMask_) != 0U) {
       packThroughAccess(access, out);
       return;

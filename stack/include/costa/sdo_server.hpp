@@ -139,7 +139,7 @@ class SdoServer {
   void abortTransfer(AbortCode code) noexcept;
   /// The transfer is over (`reason` kNone: completed): idle, no deadline; an open streamed
   /// download is told `reason`.
-  void endTransfer(AbortCode reason) noexcept {
+  COSTA_SHARED_INLINE void endTransfer(AbortCode reason) noexcept {
     writer_.cancel(reason);
     state_ = State::kIdle;
     deadline_ = kNever;

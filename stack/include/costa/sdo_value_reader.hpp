@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/hot_path.hpp"
 #include "costa/object_access.hpp"
 #include "costa/od/bytes.hpp"
 #include "costa/sdo_streaming.hpp"
@@ -39,7 +40,7 @@ class SdoValueReader {
 
   /// Copies bytes [offset, offset + count) of the value: the hook's refusal, or kNoData when the
   /// value ends before `offset + count` (a streamed value that shrank during the transfer).
-  AbortCode read(size_t offset, uint8_t* destination, size_t count) noexcept {
+  COSTA_SHARED_INLINE AbortCode read(size_t offset, uint8_t* destination, size_t count) noexcept {
     if (streamed_) {
       return readStreamed(offset, destination, count);
     }

@@ -14,6 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "costa/hot_path.hpp"
 #include "costa/port/can_port.hpp"
 #include "costa/time.hpp"
 #include "costa/tx_queue.hpp"
@@ -35,7 +36,7 @@ class TransmitPath {
   /// the controller refuses it). A synchronous PDO passes the end of its SYNC window as `expiry`:
   /// queued, it is dropped (and counted) if it cannot leave by then. A full queue drops the
   /// frame and counts it (dropped()).
-  void send(const CanFrame& frame, Microseconds expiry = kNever) noexcept {
+  COSTA_SHARED_INLINE void send(const CanFrame& frame, Microseconds expiry = kNever) noexcept {
     if (queue_.empty() && gates_ == 0U) {
       if (can_.tryTransmit(frame)) {
         return;
