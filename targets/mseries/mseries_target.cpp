@@ -5,7 +5,8 @@
 namespace costa::mseries {
 
 static_assert(!MSeriesTarget::settings().lss && MSeriesTarget::settings().automaticStart &&
-                  !MSeriesTarget::settings().profile.errorControl.nodeGuarding,
+                  (!features::kQuirkProfiles ||  // its own static_assert (joint_device.cpp)
+                   !MSeriesTarget::settings().profile.errorControl.nodeGuarding),
               "the M-series joint has no LSS, starts by itself and answers no guarding");
 
 NodeSettings MSeriesTarget::settingsFor(const DeviceConfig& config, NvStorage* eeprom) noexcept {

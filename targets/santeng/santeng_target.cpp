@@ -6,7 +6,8 @@
 namespace costa::santeng {
 
 static_assert(!SantengTarget::settings().lss &&
-                  !SantengTarget::settings().profile.errorControl.nodeGuarding,
+                  (!features::kQuirkProfiles ||  // its own static_assert (santeng_device.cpp)
+                   !SantengTarget::settings().profile.errorControl.nodeGuarding),
               "the Santeng has neither LSS nor node guarding (W8, W11)");
 
 NodeSettings SantengTarget::settingsFor(const DeviceConfig& config, NvStorage* memory) noexcept {

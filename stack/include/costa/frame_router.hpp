@@ -12,10 +12,10 @@
 // (NodeMemory::routes). find() is O(routes of one function code); add() O(routes).
 #pragma once
 
-#include "costa/hot_path.hpp"
-
 #include <stddef.h>
 #include <stdint.h>
+
+#include "costa/hot_path.hpp"
 
 namespace costa {
 
