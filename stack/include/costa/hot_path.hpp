@@ -1,4 +1,4 @@
-// Two marks for small functions on a per-frame hot path.
+// Two marks for small functions that the frames' paths go through.
 //
 // COSTA_HOT_INLINE: the few that are always expanded into their caller. The frame passes through
 // several layers (node, router, PDO engine, channel, mapping); a call per layer would cost more
@@ -6,8 +6,9 @@
 // function has one or two call sites, so the code grows little. Built for size (-Os), the
 // compiler decides, as for every other function.
 //
-// COSTA_SHARED_INLINE: those that many callers share (sending a frame, finding the hook of an
-// object, scheduling a deadline). Built for speed, the compiler expands them where it sees fit.
+// COSTA_SHARED_INLINE: those that many callers share, on the hot paths and off them (sending a
+// frame, finding the hook of an object, scheduling a deadline, ending an SDO transfer). Built
+// for speed, the compiler expands them where it sees fit.
 // Built for size, each is one copy, called: expanded at every caller, they would cost more
 // flash than the calls save.
 #pragma once
