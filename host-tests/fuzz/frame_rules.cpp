@@ -74,7 +74,7 @@ uint32_t u32At(const od::ObjectDictionary& dictionary, const od::EntryRef& ref) 
 od::EntryRef u32Entry(const od::Definition& definition, uint16_t index) {
   for (size_t i = 0; i < definition.objectCount; ++i) {
     if (definition.objects[i].index == index) {
-      const od::EntryRef ref = od::locate(definition.objects[i], 0);
+      const od::EntryRef ref = od::locate(definition, definition.objects[i], 0);
       return ref.valid() && ref.size() == 4U ? ref : od::EntryRef{};
     }
   }
@@ -97,7 +97,7 @@ const std::vector<std::pair<od::EntryRef, bool>>& pdoCobIdEntries(
     if (!receive && (object.index < kFirstTpdo || object.index > kLastTpdo)) {
       continue;
     }
-    const od::EntryRef ref = od::locate(object, 1);
+    const od::EntryRef ref = od::locate(definition, object, 1);
     if (ref.valid() && ref.size() == 4U) {
       entries.emplace_back(ref, receive);
     }

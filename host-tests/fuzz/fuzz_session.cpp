@@ -239,7 +239,7 @@ class Session {
     const od::Definition& definition = device_->node().dictionary().definition();
     size_t entries = 0;
     for (size_t i = 0; i < definition.objectCount; ++i) {
-      entries += od::entryCount(definition.objects[i]);
+      entries += od::entryCount(definition, definition.objects[i]);
     }
     size_t wanted = event.code % entries;
     od::EntryRef entry;

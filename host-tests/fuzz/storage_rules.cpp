@@ -17,7 +17,7 @@ uint32_t groupsOf(const od::Definition& definition) {
   for (size_t i = 0; i < definition.objectCount; ++i) {
     const od::Object& object = definition.objects[i];
     for (size_t r = 0; r < object.rowCount; ++r) {
-      groups |= groupBit(object.rows[r].group);
+      groups |= groupBit(od::rowsOf(definition, object)[r].group);
     }
   }
   return groups & ~groupBit(od::kGroupNone);

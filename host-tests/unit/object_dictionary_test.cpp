@@ -28,10 +28,11 @@ TEST_F(ObjectDictionaryTest, ObjectsAreSortedAndEveryEntryIsFound) {
     if (i > 0) {
       EXPECT_LT(definition.objects[i - 1].index, object.index);
     }
+    const SubEntry* rows = rowsOf(definition, object);
     for (uint8_t r = 0; r < object.rowCount; ++r) {
-      const SubEntry& row = object.rows[r];
+      const SubEntry& row = rows[r];
       if (r > 0) {
-        const SubEntry& previous = object.rows[r - 1];
+        const SubEntry& previous = rows[r - 1];
         EXPECT_EQ(previous.subIndex + previous.count, row.subIndex);  // no gap, no overlap
       }
       for (unsigned k = 0; k < row.count; ++k) {
@@ -40,7 +41,8 @@ TEST_F(ObjectDictionaryTest, ObjectsAreSortedAndEveryEntryIsFound) {
         EXPECT_EQ(dictionary_.find(object.index, sub, &ref), AbortCode::kNone);
         EXPECT_EQ(ref.row, &row);
         EXPECT_EQ(ref.subIndex(), sub);
-        EXPECT_EQ(ref.offset(), row.offset + k * row.size);
+        const unsigned base = row.attributes & kInRom ? object.romBase : object.ramBase;
+        EXPECT_EQ(ref.offset(), base + row.offset + k * row.size);
       }
     }
   }
@@ -51,14 +53,15 @@ TEST_F(ObjectDictionaryTest, ObjectsAreSortedAndEveryEntryIsFound) {
 TEST(ObjectDictionaryWithoutHashTable, FindsEveryObjectBySearchingTheSortedObjects) {
   Definition byHand = gen::example::kDefinition;
   byHand.objectSlots = nullptr;
-  byHand.objectSlotBits = 0;
+  byHand.objectSlotShift = 0;
   gen::example::Values values{};
   const ObjectDictionary dictionary(byHand, &values);
   for (uint16_t i = 0; i < byHand.objectCount; ++i) {
     const uint16_t index = byHand.objects[i].index;
     EXPECT_EQ(dictionary.findObject(index), &byHand.objects[i]) << std::hex << index;
     EntryRef ref;
-    EXPECT_EQ(dictionary.find(index, byHand.objects[i].rows[0].subIndex, &ref), AbortCode::kNone);
+    EXPECT_EQ(dictionary.find(index, rowsOf(byHand, byHand.objects[i])[0].subIndex, &ref),
+              AbortCode::kNone);
   }
   const uint16_t first = byHand.objects[0].index;
   const uint16_t last = byHand.objects[byHand.objectCount - 1U].index;
@@ -80,7 +83,7 @@ TEST_F(ObjectDictionaryTest, RowsStandForRunsOfLikeSubIndices) {
   const Object* consumers = dictionary_.findObject(0x1016);
   ASSERT_NE(consumers, nullptr);
   EXPECT_EQ(consumers->rowCount, 2U);
-  EXPECT_EQ(entryCount(*consumers), 4U);
+  EXPECT_EQ(dictionary_.entryCount(*consumers), 4U);
   values_.x1016_consumer_heartbeat_time.item[2] = 0x00050064;
   EXPECT_EQ(dictionary_.readUnsigned(0x1016, 3, 0), 0x00050064U);
   size_t visited = 0;
@@ -90,9 +93,31 @@ TEST_F(ObjectDictionaryTest, RowsStandForRunsOfLikeSubIndices) {
   }
   size_t expected = 0;
   for (uint16_t i = 0; i < gen::example::kDefinition.objectCount; ++i) {
-    expected += entryCount(gen::example::kDefinition.objects[i]);
+    expected += entryCount(gen::example::kDefinition, gen::example::kDefinition.objects[i]);
   }
   EXPECT_EQ(visited, expected);
+}
+
+// The four RPDO communication parameters have one shape: one run of rows, each object's values
+// at its own base. A value written through one is the value of that object alone.
+TEST_F(ObjectDictionaryTest, ObjectsOfOneShapeShareTheirRowsAndKeepTheirValues) {
+  const Object* first = dictionary_.findObject(0x1400);
+  const Object* second = dictionary_.findObject(0x1401);
+  ASSERT_NE(first, nullptr);
+  ASSERT_NE(second, nullptr);
+  EXPECT_EQ(first->firstRow, second->firstRow);
+  EXPECT_NE(first->ramBase, second->ramBase);
+  const uint8_t cobId[4] = {0x21, 0x03, 0x00, 0x00};
+  EntryRef ref;
+  ASSERT_EQ(dictionary_.find(0x1401, 1, &ref), AbortCode::kNone);
+  ASSERT_EQ(dictionary_.write(ref, cobId, sizeof(cobId)), AbortCode::kNone);
+  EXPECT_EQ(values_.x1401_rpdo_communication_parameter_2.cob_id_used_by_rpdo, 0x321U);
+  EXPECT_EQ(dictionary_.readUnsigned(0x1401, 1, 0), 0x321U);
+  EXPECT_NE(dictionary_.readUnsigned(0x1400, 1, 0), 0x321U);
+  uint8_t read[4] = {};
+  ASSERT_EQ(dictionary_.find(0x1400, 0, &ref), AbortCode::kNone);  // a constant: the ROM block
+  EXPECT_EQ(dictionary_.read(ref, 0, read, sizeof(read)), 1U);
+  EXPECT_EQ(read[0], dictionary_.entryCount(*first) - 1U);
 }
 
 TEST_F(ObjectDictionaryTest, MissingObjectsAndSubIndicesHaveTheirAbortCodes) {

@@ -82,7 +82,9 @@ class SantengDictionary : public ::testing::Test {
     const uint16_t access =
         row.writeOnly ? (kWritable | kRpdoMappable) : (kReadable | kTpdoMappable);
     const bool save = row.index == 0x2017;  // a command, but no PDO's (D8)
-    EXPECT_EQ(ref.attributes() & ~kHasLimits, save ? static_cast<uint16_t>(kWritable) : access);
+    // (kPlainInteger: the generator's mark of an integer without limits, below)
+    EXPECT_EQ(ref.attributes() & ~(kHasLimits | kPlainInteger),
+              save ? static_cast<uint16_t>(kWritable) : access);
     EXPECT_EQ(ref.group(), kGroupNone);  // nothing of the commands and queries is stored
     const int64_t value = isSigned(ref.type())
                               ? dictionary_.readSigned(ref)
@@ -90,8 +92,10 @@ class SantengDictionary : public ::testing::Test {
     EXPECT_EQ(value, row.value);
     if (row.low == kNoLimit) {
       EXPECT_EQ(ref.attributes() & kHasLimits, 0U);
+      EXPECT_NE(ref.attributes() & kPlainInteger, 0U);
       return;
     }
+    EXPECT_EQ(ref.attributes() & kPlainInteger, 0U);
     ASSERT_NE(ref.row->limits, 0U);
     const Limits& limits = gen::santeng::kDefinition.limits[ref.row->limits - 1U];
     EXPECT_EQ(static_cast<int64_t>(limits.low), row.low);

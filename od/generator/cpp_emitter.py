@@ -3,8 +3,9 @@ NAME_od_names.cpp. Pure functions of the model; the same model gives the same by
 
 import struct
 import zlib
+from dataclasses import dataclass, field
 
-from cpp_layout import Block, Layout, plan_layout
+from cpp_layout import CONSTANTS, VALUES, Block, Layout, plan_layout
 from cpp_literals import (comment_text, c_string, limit_pattern, octets_literal,
                           pattern_literal, scalar_literal, text_literal)
 from data_types import GROUP_ENUMERATORS, GROUP_NONE, OBJECT_CODES
@@ -231,10 +232,62 @@ def rows_of(obj, row_of: dict) -> list:
     return rows
 
 
+@dataclass
+class _RowRun:
+    label: str   # the objects that use it, for the comment above it
+    rows: list   # rows_of() of the first of them
+
+
+@dataclass
+class _PlacedRows:
+    runs: list = field(default_factory=list)        # _RowRun, in the order of kRows
+    first_rows: dict = field(default_factory=dict)  # index -> position of its run in kRows
+    row_counts: dict = field(default_factory=dict)  # index -> rows of the object
+    shared_checks: list = field(default_factory=list)  # (offset, offset it shares, label)
+
+
+def _row_key(row: list, layout: Layout, row_of: dict) -> tuple:
+    """What a row of kRows holds, independent of its object: equal keys, equal rows."""
+    first = row[0]
+    key = (first.index, first.sub)
+    block = CONSTANTS if first.in_rom else VALUES
+    return (first.sub, len(row), first.data_type.enumerator, _attributes_text(first),
+            first.size, first.group, row_of.get(key), block, layout.positions[key])
+
+
+def _place_rows(device: Device, layout: Layout, row_of: dict) -> _PlacedRows:
+    """The runs of kRows: one per shape of object (its rows, and the C++ types of its members
+    of each block, which put its values at the same offsets from its bases)."""
+    placed, seen = _PlacedRows(), {}
+    for obj in device.objects:
+        rows = rows_of(obj, row_of)
+        shape = (layout.shapes.get((obj.index, VALUES)), layout.shapes.get((obj.index, CONSTANTS)),
+                 tuple(_row_key(row, layout, row_of) for row in rows))
+        placed.row_counts[obj.index] = len(rows)
+        label = f"0x{obj.index:04X} {comment_text(obj.name)}"
+        if shape in seen:
+            run, first_row = seen[shape]
+            placed.first_rows[obj.index] = first_row
+            run.label += f", 0x{obj.index:04X}"
+            for own, shared in zip(rows, run.rows):
+                own_key, shared_key = (own[0].index, own[0].sub), (shared[0].index, shared[0].sub)
+                if layout.relative[own_key] != layout.relative[shared_key]:
+                    placed.shared_checks.append((layout.relative[own_key],
+                                                 layout.relative[shared_key],
+                                                 f"0x{own[0].index:04X}:{own[0].sub}"))
+            continue
+        run = _RowRun(label, rows)
+        first_row = sum(len(r.rows) for r in placed.runs)
+        seen[shape] = (run, first_row)
+        placed.first_rows[obj.index] = first_row
+        placed.runs.append(run)
+    return placed
+
+
 def object_slots(indices: list) -> tuple:
     """The object hash table of od::Definition: (bits, slots), 2^bits slots filled to at most
-    60 %, slot = 1 + position of the object or 0; objectSlotOf() in definition.hpp, linear
-    probing."""
+    60 %, slot = 1 + position of the object or 0; objectSlotOf() in definition.hpp (with the
+    shift 32 - bits), linear probing."""
     bits = 3
     while (1 << bits) * 6 < len(indices) * 10:
         bits += 1
@@ -260,45 +313,57 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
             lines.append(f"{_INDENT * 2}{{{pattern_literal(low)}, {pattern_literal(high)}}},")
         lines += ["};", ""]
     run_checks = []
-    object_rows = {}
-    for obj in device.objects:
-        rows = rows_of(obj, row_of)
-        object_rows[obj.index] = len(rows)
-        lines.append(f"// 0x{obj.index:04X} {comment_text(obj.name)}")
-        lines.append(f"constexpr costa::od::SubEntry kRows{obj.index:04X}[] = {{")
-        for row in rows:
+    placed = _place_rows(device, layout, row_of)
+    lines.append("// Every object's rows; objects of one shape share theirs (Object::firstRow).")
+    lines.append("constexpr costa::od::SubEntry kRows[] = {")
+    for run in placed.runs:
+        lines.append(f"{_INDENT * 2}// {run.label}")
+        for row in run.rows:
             first = row[0]
             key = (first.index, first.sub)
             limits = f"{row_of[key] + 1}" if key in row_of else "0"
             lines.append(f"{_INDENT * 2}{{{first.sub}, {len(row)}, costa::od::DataType::"
                          f"{first.data_type.enumerator}, {_attributes_text(first)}, "
                          f"{first.size}, {_group_text(first.group)}, {limits}, "
-                         f"{layout.offsets[key]}}},")
+                         f"{layout.relative[key]}}},")
+    if not placed.runs:
+        lines.append(f"{_INDENT * 2}{{0, 0, costa::od::DataType::kBoolean, 0, 0, 0, 0, 0}},"
+                     "  // none: keeps the array non-empty")
+    lines += ["};", ""]
+    for obj in device.objects:
+        for row in rows_of(obj, row_of):
+            first = row[0]
             for k, entry in enumerate(row[1:], start=1):
                 actual = layout.offsets[(entry.index, entry.sub)]
-                if not actual.startswith(layout.offsets[key]):  # not an item of one array
-                    run_checks.append((actual, f"{layout.offsets[key]} + {k * first.size}U",
+                expected = layout.offsets[(first.index, first.sub)]
+                if not actual.startswith(expected):  # not an item of one array
+                    run_checks.append((actual, f"{expected} + {k * first.size}U",
                                        f"0x{entry.index:04X}:{entry.sub}"))
-        lines += ["};", ""]
     lines.append("constexpr costa::od::Object kObjects[] = {")
     for obj in device.objects:
+        ram = layout.bases.get((obj.index, VALUES), "0")
+        rom = layout.bases.get((obj.index, CONSTANTS), "0")
         lines.append(f"{_INDENT * 2}{{0x{obj.index:04X}, costa::od::ObjectCode::"
-                     f"{OBJECT_CODES[obj.code]}, {object_rows[obj.index]}, "
-                     f"kRows{obj.index:04X}}},")
+                     f"{OBJECT_CODES[obj.code]}, {placed.row_counts[obj.index]}, "
+                     f"{placed.first_rows[obj.index]}, {ram}, {rom}}},")
     lines += ["};", ""]
-    lines.append("static_assert(costa::od::ramInIndexOrder(kObjects), \"RAM values in the order "
-                 "of their indices\");")
+    lines.append("static_assert(costa::od::ramInIndexOrder(kObjects, kRows), \"RAM values in the "
+                 "order of their indices\");")
     for check in layout.size_checks:
         lines.append(f"static_assert({check.expression} == {check.size}, "
                      f"\"size of {check.label}\");")
     for actual, expected, label in run_checks:
         lines.append(f"static_assert({actual} == {expected}, \"{label} follows the value "
                      f"before it\");")
+    for actual, expected, label in placed.shared_checks:
+        lines.append(f"static_assert({actual} == {expected}, \"{label} lies where the row it "
+                     f"shares says\");")
     bits, slots = object_slots([obj.index for obj in device.objects])
-    lines.append("constexpr uint16_t kObjectSlots[] = {")
+    # Built for size (-Os), lookups search the sorted objects and the table is left out.
+    lines += ["#if !defined(__OPTIMIZE_SIZE__)", "constexpr uint16_t kObjectSlots[] = {"]
     for start in range(0, len(slots), 16):
         lines.append(_INDENT * 2 + ", ".join(str(v) for v in slots[start:start + 16]) + ",")
-    lines += ["};", ""]
+    lines += ["};", "#else", "constexpr const uint16_t* kObjectSlots = nullptr;", "#endif", ""]
     lines.append("static_assert(sizeof(Values) <= 0xFFFFU && sizeof(Constants) <= 0xFFFFU, "
                  "\"value offsets are 16-bit: keep each block under 64 KiB\");")
     real_limits = any(e.has_limits and e.data_type.kind == "real"
@@ -307,6 +372,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
               "const costa::od::Definition kDefinition = {",
               f"{_INDENT * 2}kObjects,",
               f"{_INDENT * 2}{len(device.objects)},",
+              f"{_INDENT * 2}kRows,",
               f"{_INDENT * 2}&kConstants,",
               f"{_INDENT * 2}kDefaults,",
               f"{_INDENT * 2}kDefaultBytes,",
@@ -317,7 +383,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
               f"{_INDENT * 2}{'kLimits' if limit_rows else 'nullptr'},",
               f"{_INDENT * 2}{'&costa::od::checkRealLimits' if real_limits else 'nullptr'},",
               f"{_INDENT * 2}kObjectSlots,",
-              f"{_INDENT * 2}{bits},",
+              f"{_INDENT * 2}{32 - bits},",
               f"{_INDENT * 2}0x{device.dummy_usage:02X}U,",
               "};", "", f"}}  // namespace costa::gen::{name}", ""]
     return "\n".join(lines)

@@ -73,6 +73,16 @@ class Layout:
     constants: Block
     offsets: dict = field(default_factory=dict)      # (index, sub) -> C++ expression
     size_checks: list = field(default_factory=list)  # SizeCheck
+    # Each stored entry's offset as a base and a part relative to it: the base of its object's
+    # member of the block ((index, block type name) -> offsetof() expression), the offset within
+    # that member ((index, sub) -> C++ expression, "0" for a VAR or a DOMAIN), and where in the
+    # member that is, independent of names ((index, sub) -> (member position, item)).
+    bases: dict = field(default_factory=dict)
+    relative: dict = field(default_factory=dict)
+    positions: dict = field(default_factory=dict)
+    # The C++ types of an object's member of a block, in order ((index, block type name) ->
+    # tuple): members of one shape have their values at the same relative offsets.
+    shapes: dict = field(default_factory=dict)
 
 
 def _items_form(obj: OdObject, block_entries: list) -> bool:
@@ -110,14 +120,26 @@ def _record_block(block: Block, layout: Layout) -> None:
     owner = block.type_name
     for top in block.members:
         base = f"offsetof({owner}, {top.name})"
-        for member in top.members:
+        layout.bases[(top.obj.index, owner)] = base
+        layout.shapes[(top.obj.index, owner)] = (
+            bool(top.struct_type),
+            tuple((m.entries[0].data_type.cpp_type, element_suffix(m.entries[0]),
+                   len(m.entries) if m.is_items else 0) for m in top.members))
+        for position, member in enumerate(top.members):
             if top.struct_type:
                 scope = f"{owner}::{top.struct_type}"
-                where = f"{base} + offsetof({scope}, {member.name})"
+                inner = f"offsetof({scope}, {member.name})"
+                where = f"{base} + {inner}"
                 qualified = f"{scope}::{member.name}"
             else:
+                inner = "0"
                 where, qualified = base, f"{owner}::{member.name}"
             first = member.entries[0]
+            for k, entry in enumerate(member.entries):
+                step = f" + {k} * sizeof({element_type(entry)})" if k else ""
+                key = (entry.index, entry.sub)
+                layout.relative[key] = inner + step
+                layout.positions[key] = (position, k)
             if not member.is_items:
                 layout.offsets[(first.index, first.sub)] = where
                 layout.size_checks.append(SizeCheck(f"sizeof({qualified})",
@@ -145,6 +167,8 @@ def plan_layout(device: Device) -> Layout:
     layout = Layout(values, constants)
     _record_block(values, layout)
     _record_block(constants, layout)
-    for entry in device.all_entries():
-        layout.offsets.setdefault((entry.index, entry.sub), "0")  # DOMAINs
+    for entry in device.all_entries():  # DOMAINs
+        layout.offsets.setdefault((entry.index, entry.sub), "0")
+        layout.relative.setdefault((entry.index, entry.sub), "0")
+        layout.positions.setdefault((entry.index, entry.sub), (0, 0))
     return layout

@@ -87,6 +87,7 @@ RPDO_MAPPABLE = 1 << 3
 TPDO_MAPPABLE = 1 << 4
 NODE_ID_RELATIVE = 1 << 5
 HAS_LIMITS = 1 << 6
+PLAIN_INTEGER = 1 << 7
 ATTRIBUTE_NAMES = (
     (READABLE, "kReadable"),
     (WRITABLE, "kWritable"),
@@ -95,6 +96,7 @@ ATTRIBUTE_NAMES = (
     (TPDO_MAPPABLE, "kTpdoMappable"),
     (NODE_ID_RELATIVE, "kNodeIdRelative"),
     (HAS_LIMITS, "kHasLimits"),
+    (PLAIN_INTEGER, "kPlainInteger"),
 )
 
 # AccessType -> (access attribute bits, attribute bits added by PDOMapping=1).

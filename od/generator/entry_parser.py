@@ -3,8 +3,8 @@ of a compact ARRAY) into a validated Entry."""
 
 from data_types import (ACCESS_TYPES, DATA_TYPES, DOMAIN, FIRST_CUSTOM_GROUP,
                         GROUP_APPLICATION, GROUP_COMMUNICATION, GROUP_NAMES, GROUP_NONE,
-                        HAS_LIMITS, LAST_CUSTOM_GROUP, NODE_ID_RELATIVE, WRITABLE_ACCESS,
-                        default_group)
+                        HAS_LIMITS, IN_ROM, LAST_CUSTOM_GROUP, NODE_ID_RELATIVE,
+                        PLAIN_INTEGER, WRITABLE_ACCESS, default_group)
 from diagnostics import Diagnostics
 from eds_model import Entry
 from ini_reader import IniEntry, IniSection
@@ -236,6 +236,8 @@ def parse_entry(index: int, sub: int, section: IniSection, diag: Diagnostics, *,
             diag.warning(key_line(section, "DefaultValue"),
                          f"$NODEID+{parsed.value} overflows {data_type.eds_name} "
                          "for some node-ids")
+    if data_type.is_integer and not attributes & IN_ROM and limits is None:
+        attributes |= PLAIN_INTEGER  # a write checks its length alone
     size = _parse_capacity(section, data_type, access, parsed.value, diag)
     group = _parse_group(index, section, access, data_type, inherited_group, diag)
     if diag.error_count != errors_before:

@@ -54,21 +54,21 @@ void copyDefault(const Definition& definition, const EntryRef& ref, uint8_t* des
   }
 }
 
-void ObjectDictionary::restoreRow(const SubEntry& row) noexcept {
+void ObjectDictionary::restoreRow(const Object& object, const SubEntry& row) noexcept {
   if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
     return;
   }
-  const size_t bytes = storageBytes(row);
-  const size_t end = row.offset + row.count * bytes;
-  fillBytes(values_ + row.offset, 0, end - row.offset);
+  const size_t begin = valueOffset(object, row, 0);
+  const size_t end = begin + row.count * storageBytes(row);
+  fillBytes(values_ + begin, 0, end - begin);
   const Definition& definition = *definition_;
   const DefaultValue* last = definition.defaults + definition.defaultCount;
-  for (const DefaultValue* value = firstDefaultFrom(definition, row.offset);
+  for (const DefaultValue* value = firstDefaultFrom(definition, begin);
        value < last && value->offset < end; ++value) {
     writeDefault(definition, *value, values_ + value->offset);
   }
   if ((row.attributes & kNodeIdRelative) != 0U) {
-    addNodeId(row);
+    addNodeId(object, row);
   }
 }
 
@@ -97,24 +97,26 @@ bool ObjectDictionary::restoreDefaultIfRefused(const EntryRef& ref) noexcept {
   return true;
 }
 
-void ObjectDictionary::addNodeId(const SubEntry& row) noexcept {
-  const size_t end = row.offset + row.count * storageBytes(row);
-  for (size_t offset = row.offset; offset < end; offset += storageBytes(row)) {
+void ObjectDictionary::addNodeId(const Object& object, const SubEntry& row) noexcept {
+  const size_t begin = valueOffset(object, row, 0);
+  const size_t end = begin + row.count * storageBytes(row);
+  for (size_t offset = begin; offset < end; offset += storageBytes(row)) {
     storeNative(values_ + offset, loadNative(values_ + offset, row.size) + nodeId_, row.size);
   }
 }
 
 template <typename Wanted>
 void ObjectDictionary::restoreRows(const Object& object, Wanted wanted) noexcept {
+  const SubEntry* rows = rowsOf(*definition_, object);
   for (uint8_t i = 0; i < object.rowCount; ++i) {
-    if (wanted(object.rows[i])) {
-      restoreRow(object.rows[i]);
+    if (wanted(rows[i])) {
+      restoreRow(object, rows[i]);
     }
   }
 }
 
 namespace {
-// Calls visit(row) for every row of the objects whose index lies in [first, last].
+// Calls visit(object, row) for every row of the objects whose index lies in [first, last].
 template <typename Visit>
 void forEachRowIn(const Definition& definition, uint16_t first, uint16_t last, Visit visit) {
   for (size_t i = 0; i < definition.objectCount; ++i) {
@@ -125,8 +127,9 @@ void forEachRowIn(const Definition& definition, uint16_t first, uint16_t last, V
     if (object.index < first) {
       continue;
     }
+    const SubEntry* rows = rowsOf(definition, object);
     for (uint8_t r = 0; r < object.rowCount; ++r) {
-      visit(object.rows[r]);
+      visit(object, rows[r]);
     }
   }
 }
@@ -142,13 +145,15 @@ void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
     begin = 0;
     end = definition.valuesSize;
   } else {
-    forEachRowIn(definition, first, last, [&begin, &end](const SubEntry& row) {
-      if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
-        return;
-      }
-      begin = begin == SIZE_MAX ? row.offset : begin;
-      end = row.offset + row.count * storageBytes(row);
-    });
+    forEachRowIn(definition, first, last,
+                 [&begin, &end](const Object& object, const SubEntry& row) {
+                   if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
+                     return;
+                   }
+                   const size_t offset = valueOffset(object, row, 0);
+                   begin = begin == SIZE_MAX ? offset : begin;
+                   end = offset + row.count * storageBytes(row);
+                 });
   }
   if (begin == SIZE_MAX) {
     return;
@@ -159,9 +164,9 @@ void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
        value < stop && value->offset < end; ++value) {
     writeDefault(definition, *value, values_ + value->offset);
   }
-  forEachRowIn(definition, first, last, [this](const SubEntry& row) {
+  forEachRowIn(definition, first, last, [this](const Object& object, const SubEntry& row) {
     if ((row.attributes & (kNodeIdRelative | kInRom)) == kNodeIdRelative) {
-      addNodeId(row);
+      addNodeId(object, row);
     }
   });
 }

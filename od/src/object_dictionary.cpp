@@ -45,7 +45,7 @@ namespace {
 // The objects after a collision in the hash table: the next slots, in turn.
 [[gnu::noinline]] const Object* probeObject(const Definition& definition, uint16_t index,
                                             uint32_t slot) noexcept {
-  const uint32_t mask = (uint32_t{1} << definition.objectSlotBits) - 1U;
+  const uint32_t mask = (uint32_t{1} << (32U - definition.objectSlotShift)) - 1U;
   for (slot = (slot + 1U) & mask;; slot = (slot + 1U) & mask) {
     const uint16_t entry = definition.objectSlots[slot];
     if (entry == 0U) {
@@ -58,18 +58,9 @@ namespace {
   }
 }
 
-// The object hash table (Definition::objectSlots): one probe for most objects of a table
-// filled to 60 %; else a binary search without a branch on the comparison.
-inline const Object* searchObject(const Definition& definition, uint16_t index) noexcept {
-  if (definition.objectSlots != nullptr) {
-    const uint32_t slot = objectSlotOf(index, definition.objectSlotBits);
-    const uint16_t entry = definition.objectSlots[slot];
-    if (entry == 0U) {
-      return nullptr;
-    }
-    const Object* object = &definition.objects[entry - 1U];
-    return object->index == index ? object : probeObject(definition, index, slot);
-  }
+// A binary search of the sorted objects without a branch on the comparison.
+[[gnu::noinline]] const Object* searchSorted(const Definition& definition,
+                                             uint16_t index) noexcept {
   const Object* low = definition.objects;
   size_t count = definition.objectCount;
   if (count == 0U) {
@@ -83,6 +74,22 @@ inline const Object* searchObject(const Definition& definition, uint16_t index) 
   return low->index == index ? low : nullptr;
 }
 
+// The object hash table (Definition::objectSlots): one probe for most objects of a table
+// filled to 60 %; else, and in a build for size (which has no table), the binary search (a
+// call of its own: the usual lookup needs fewer registers, and the finds share one copy).
+inline const Object* searchObject(const Definition& definition, uint16_t index) noexcept {
+  if (kExpandFastPaths && definition.objectSlots != nullptr) {
+    const uint32_t slot = objectSlotOf(index, definition.objectSlotShift);
+    const uint16_t entry = definition.objectSlots[slot];
+    if (entry == 0U) {
+      return nullptr;
+    }
+    const Object* object = &definition.objects[entry - 1U];
+    return object->index == index ? object : probeObject(definition, index, slot);
+  }
+  return searchSorted(definition, index);
+}
+
 }  // namespace
 
 const Object* ObjectDictionary::findObject(uint16_t index) const noexcept {
@@ -94,12 +101,13 @@ AbortCode ObjectDictionary::find(uint16_t index, uint8_t subIndex, EntryRef* out
   if (object == nullptr) {
     return AbortCode::kNoObject;
   }
-  const SubEntry* const rows = object->rows;
-  for (uint8_t i = 0; i < object->rowCount; ++i) {
+  const SubEntry* row = rowsOf(*definition_, *object);
+  for (unsigned left = object->rowCount; left != 0U; --left, ++row) {
     // One comparison: below the row's first sub-index, the difference is negative, which is a
     // large unsigned number.
-    if (static_cast<unsigned>(subIndex - rows[i].subIndex) < rows[i].count) {
-      *out = EntryRef{object, &rows[i], subIndex};
+    const auto k = static_cast<unsigned>(subIndex - row->subIndex);
+    if (k < row->count) {
+      *out = EntryRef{object, row, subIndex, static_cast<uint16_t>(valueOffset(*object, *row, k))};
       return AbortCode::kNone;
     }
   }
@@ -107,8 +115,9 @@ AbortCode ObjectDictionary::find(uint16_t index, uint8_t subIndex, EntryRef* out
 }
 
 EntryRef ObjectDictionary::find(uint16_t index, uint8_t subIndex) const noexcept {
-  const Object* object = searchObject(*definition_, index);
-  return object == nullptr ? EntryRef{} : locate(*object, subIndex);
+  EntryRef ref;
+  (void)find(index, subIndex, &ref);  // `ref` stays invalid when it fails
+  return ref;
 }
 
 const uint8_t* ObjectDictionary::address(const EntryRef& ref) const noexcept {

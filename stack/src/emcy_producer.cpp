@@ -110,10 +110,10 @@ void EmcyProducer::publishRegister() noexcept {
 
 void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
   const od::Object* history = dictionary_.findObject(kErrorHistoryIndex);
-  if (history == nullptr || od::entryCount(*history) < 2U) {
+  if (history == nullptr || dictionary_.entryCount(*history) < 2U) {
     return;
   }
-  const auto capacity = static_cast<uint8_t>(od::entryCount(*history) - 1U);
+  const auto capacity = static_cast<uint8_t>(dictionary_.entryCount(*history) - 1U);
   auto count = static_cast<uint8_t>(dictionary_.readUnsigned32(kErrorHistoryIndex, 0, 0));
   if (count < capacity) {
     ++count;
@@ -214,7 +214,7 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
     if (ref.subIndex() != 0U || data[0] != 0U) {
       return AbortCode::kInvalidValue;
     }
-    for (unsigned sub = 1; sub < od::entryCount(*ref.object); ++sub) {
+    for (unsigned sub = 1; sub < dictionary.entryCount(*ref.object); ++sub) {
       dictionary.storeUnsigned(kErrorHistoryIndex, static_cast<uint8_t>(sub), 0);
     }
     dictionary.storeUnsigned(kErrorHistoryIndex, 0, 0);

@@ -15,7 +15,7 @@ void HeartbeatConsumer::configure(bool reset) noexcept {
   if (object == nullptr) {
     return;
   }
-  for (unsigned i = 0; i + 1U < od::entryCount(*object) && count_ < capacity_; ++i) {
+  for (unsigned i = 0; i + 1U < dictionary_.entryCount(*object) && count_ < capacity_; ++i) {
     const auto value = dictionary_.readUnsigned32(kIndex, static_cast<uint8_t>(i + 1U), 0);
     const auto nodeId = static_cast<uint8_t>(value >> 16U);
     const Microseconds time = millisecondsToMicroseconds(value & 0xFFFFU);
@@ -96,7 +96,7 @@ AbortCode HeartbeatConsumer::write(od::ObjectDictionary& dictionary, const od::E
       return AbortCode::kInvalidValue;
     }
     if (nodeId != 0U && (value & 0xFFFFU) != 0U) {
-      for (unsigned sub = 1; sub < od::entryCount(*ref.object); ++sub) {
+      for (unsigned sub = 1; sub < dictionary.entryCount(*ref.object); ++sub) {
         if (sub == ref.subIndex()) {
           continue;
         }

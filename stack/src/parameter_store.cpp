@@ -16,15 +16,16 @@ namespace {
   unsigned step = 0;
   if (ref->valid()) {  // the sub-index after it
     objectAt = static_cast<size_t>(ref->object - definition.objects);
-    rowAt = static_cast<size_t>(ref->row - ref->object->rows);
+    rowAt = static_cast<size_t>(ref->row - od::rowsOf(definition, *ref->object));
     step = static_cast<unsigned>(ref->sub - ref->row->subIndex) + 1U;
   }
   for (; objectAt < definition.objectCount; ++objectAt) {
     const od::Object& object = definition.objects[objectAt];
+    const od::SubEntry* rows = od::rowsOf(definition, object);
     for (; rowAt < object.rowCount; ++rowAt) {
-      const od::SubEntry& row = object.rows[rowAt];
+      const od::SubEntry& row = rows[rowAt];
       if (row.group == group && (row.attributes & attributes) == attributes && step < row.count) {
-        *ref = od::EntryRef{&object, &row, static_cast<uint8_t>(row.subIndex + step)};
+        *ref = od::EntryRef::at(object, row, static_cast<uint8_t>(row.subIndex + step));
         return true;
       }
       step = 0;  // the next row from its first sub-index

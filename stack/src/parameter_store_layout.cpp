@@ -57,9 +57,9 @@ size_t collectGroups(const od::Definition& definition, GroupBytes* groups,
   size_t count = 0;
   for (size_t i = 0; i < definition.objectCount; ++i) {
     const od::Object& object = definition.objects[i];
+    const od::SubEntry* rows = od::rowsOf(definition, object);
     for (size_t r = 0; r < object.rowCount; ++r) {
-      if (object.rows[r].group != od::kGroupNone &&
-          !addRow(object.rows[r], groups, &count, capacity)) {
+      if (rows[r].group != od::kGroupNone && !addRow(rows[r], groups, &count, capacity)) {
         return SIZE_MAX;
       }
     }

@@ -81,7 +81,7 @@ AbortCode PdoEngine::checkMappingWrite(bool receive, bool pdoValid, const od::En
     return AbortCode::kNone;
   }
   const uint8_t count = data[0];
-  if (count > PdoMap::kMaxEntries || count >= od::entryCount(*ref.object)) {
+  if (count > PdoMap::kMaxEntries || count >= dictionary.entryCount(*ref.object)) {
     return AbortCode::kMappingTooLong;
   }
   uint32_t values[PdoMap::kMaxEntries] = {};

@@ -35,17 +35,18 @@ int main() {
   for (uint16_t o = 0; o < d.objectCount; ++o) {
     const costa::od::Object& object = d.objects[o];
     for (uint8_t r = 0; r < object.rowCount; ++r) {
-      const costa::od::SubEntry& e = object.rows[r];
+      const costa::od::SubEntry& e = costa::od::rowsOf(d, object)[r];
       for (unsigned k = 0; k < e.count; ++k) {
         const bool rom = (e.attributes & costa::od::kInRom) != 0;
-        const costa::od::EntryRef ref{&object, &e, static_cast<uint8_t>(e.subIndex + k)};
+        const costa::od::EntryRef ref =
+            costa::od::EntryRef::at(object, e, static_cast<uint8_t>(e.subIndex + k));
         unsigned char defaults[300] = {};
         if (!rom && e.type != costa::od::DataType::kDomain) {
           costa::od::copyDefault(d, ref, defaults);
         }
         const unsigned char* block = rom ? static_cast<const unsigned char*>(d.constants)
                                          : defaults;
-        const unsigned offset = rom ? e.offset + k * e.size : 0;
+        const unsigned offset = rom ? ref.offset() : 0;
         printf("E %04X %u %04X %u %u %u %u ", unsigned{object.index}, e.subIndex + k,
                static_cast<unsigned>(e.type), unsigned{e.attributes}, unsigned{e.size},
                unsigned{e.group}, static_cast<unsigned>(object.code));

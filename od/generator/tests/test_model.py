@@ -8,7 +8,7 @@ from data_types import (DATA_TYPES, GROUP_APPLICATION, GROUP_COMMUNICATION, GROU
                         GROUP_NONE, OBJECT_ARRAY, OBJECT_DOMAIN, OBJECT_RECORD, OBJECT_VAR)
 from tests.helpers import EXAMPLE_EDS, eds, parse_file, parse_text
 
-ATTR = {"R": 1, "W": 2, "ROM": 4, "RPDO": 8, "TPDO": 16, "NODE": 32, "LIM": 64}
+ATTR = {"R": 1, "W": 2, "ROM": 4, "RPDO": 8, "TPDO": 16, "NODE": 32, "LIM": 64, "PLAIN": 128}
 
 
 def attrs(*names):
@@ -107,15 +107,15 @@ class ExampleTest(unittest.TestCase):
     def test_access_and_pdo_attributes(self):
         expected = {
             (0x1000, 0): attrs("R", "ROM"),
-            (0x1001, 0): attrs("R", "TPDO"),                  # ro + PDOMapping
+            (0x1001, 0): attrs("R", "TPDO", "PLAIN"),         # ro + PDOMapping
             (0x2000, 1): attrs("R", "W", "RPDO", "TPDO", "LIM"),  # rw + PDOMapping
-            (0x2000, 2): attrs("R", "W", "RPDO"),             # rww + PDOMapping
-            (0x2000, 3): attrs("R", "W", "TPDO"),             # rwr + PDOMapping
-            (0x2000, 4): attrs("W", "RPDO"),                  # wo + PDOMapping
-            (0x2000, 5): attrs("R", "W"),                     # rw
-            (0x2000, 9): attrs("R"),                          # ro
-            (0x1014, 0): attrs("R", "W", "NODE"),
-            (0x1017, 0): attrs("R", "W", "LIM"),
+            (0x2000, 2): attrs("R", "W", "RPDO", "PLAIN"),    # rww + PDOMapping
+            (0x2000, 3): attrs("R", "W", "TPDO", "PLAIN"),    # rwr + PDOMapping
+            (0x2000, 4): attrs("W", "RPDO", "PLAIN"),         # wo + PDOMapping
+            (0x2000, 5): attrs("R", "W", "PLAIN"),            # rw
+            (0x2000, 9): attrs("R"),                          # ro BOOLEAN: not an integer
+            (0x1014, 0): attrs("R", "W", "NODE", "PLAIN"),
+            (0x1017, 0): attrs("R", "W", "LIM"),              # limits: no PLAIN
         }
         for (index, sub), value in expected.items():
             with self.subTest(index=hex(index), sub=sub):

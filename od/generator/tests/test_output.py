@@ -80,13 +80,15 @@ class ExampleOutputTest(unittest.TestCase):
     def test_sub_entry_rows(self):
         self.assertIn(
             "{0, 1, costa::od::DataType::kUnsigned16, costa::od::kReadable | costa::od::kWritable"
-            " | costa::od::kHasLimits, 2, costa::od::kGroupCommunication, 1, "
-            "offsetof(Values, x1017_producer_heartbeat_time)},", self.cpp)
+            " | costa::od::kHasLimits, 2, costa::od::kGroupCommunication, 1, 0},", self.cpp)
+        self.assertIn("{0x1017, costa::od::ObjectCode::kVar, 1, 11, "
+                      "offsetof(Values, x1017_producer_heartbeat_time), 0},", self.cpp)
         # Record members of one type stored back to back: one row of four.
         self.assertIn(
-            "{1, 4, costa::od::DataType::kUnsigned32, costa::od::kReadable, 4, "
-            "costa::od::kGroupNone, 0, offsetof(Values, x1018_identity_object) + "
-            "offsetof(Values::X1018IdentityObject, vendor_id)},", self.cpp)
+            "{1, 4, costa::od::DataType::kUnsigned32, costa::od::kReadable | "
+            "costa::od::kPlainInteger, 4, "
+            "costa::od::kGroupNone, 0, offsetof(Values::X1018IdentityObject, vendor_id)},",
+            self.cpp)
         self.assertIn(
             "static_assert(offsetof(Values, x1018_identity_object) + offsetof(Values::"
             "X1018IdentityObject, serial_number) == offsetof(Values, x1018_identity_object) + "
@@ -94,33 +96,32 @@ class ExampleOutputTest(unittest.TestCase):
             "value before it\");", self.cpp)
         # Array items: one row of three.
         self.assertIn(
-            "{1, 3, costa::od::DataType::kUnsigned32, costa::od::kReadable | costa::od::kWritable,"
-            " 4, costa::od::kGroupCommunication, 0, offsetof(Values, x1016_consumer_heartbeat_time)"
-            " + offsetof(Values::X1016ConsumerHeartbeatTime, item)},", self.cpp)
+            "{1, 3, costa::od::DataType::kUnsigned32, costa::od::kReadable | costa::od::kWritable"
+            " | costa::od::kPlainInteger, 4, costa::od::kGroupCommunication, 0, offsetof(Values::X1016ConsumerHeartbeatTime,"
+            " item)},", self.cpp)
         # Strings are never merged: one row per item.
         self.assertIn("+ 1 * sizeof(char[5])},", self.cpp)
         self.assertIn(
             "{0, 1, costa::od::DataType::kUnsigned8, costa::od::kReadable | costa::od::kInRom, 1,"
-            " costa::od::kGroupNone, 0, offsetof(Constants, x1018_identity_object) + "
-            "offsetof(Constants::X1018IdentityObject, highest_sub_index_supported)},",
-            self.cpp)
+            " costa::od::kGroupNone, 0, offsetof(Constants::X1018IdentityObject, "
+            "highest_sub_index_supported)},", self.cpp)
         self.assertIn("{0, 1, costa::od::DataType::kDomain, costa::od::kReadable | "
                       "costa::od::kWritable, 0, costa::od::kGroupNone, 0, 0},", self.cpp)
         self.assertIn("costa::od::kReadable | costa::od::kWritable | costa::od::kNodeIdRelative"
-                      ", 4, costa::od::kGroupCommunication, 0, offsetof(Values, x1014_cob_id_emcy)",
-                      self.cpp)
+                      " | costa::od::kPlainInteger, 4, costa::od::kGroupCommunication, 0, 0},", self.cpp)
+        self.assertIn("{0x1014, costa::od::ObjectCode::kVar, 1, 8, offsetof(Values, "
+                      "x1014_cob_id_emcy), 0},", self.cpp)
         self.assertIn("costa::od::kGroupLss", self.cpp)
-        self.assertIn(", 1, 7, 0, offsetof(Values, x2009_lss_settings)", self.cpp)
+        self.assertIn(", 1, 7, 0, offsetof(Values::X2009LssSettings, custom_group)}", self.cpp)
         # A ROM item and RAM items of one array differ in attributes: separate rows.
         self.assertIn("{2, 2, costa::od::DataType::kUnsigned16, costa::od::kReadable | "
-                      "costa::od::kWritable, 2, costa::od::kGroupApplication, 0, "
-                      "offsetof(Values, x2008_mixed_array) + offsetof(Values::X2008MixedArray, "
-                      "element_2)},", self.cpp)
+                      "costa::od::kWritable | costa::od::kPlainInteger, 2, costa::od::kGroupApplication, 0, "
+                      "offsetof(Values::X2008MixedArray, element_2)},", self.cpp)
         self.assertIn('static_assert(sizeof(Values) <= 0xFFFFU && sizeof(Constants) <= 0xFFFFU, '
                       '"value offsets are 16-bit: keep each block under 64 KiB");', self.cpp)
 
     def test_objects_sorted(self):
-        rows = re.findall(r"\{0x([0-9A-F]{4}), costa::od::ObjectCode::(\w+), (\d+), kRows",
+        rows = re.findall(r"\{0x([0-9A-F]{4}), costa::od::ObjectCode::(\w+), (\d+), \d+, ",
                           self.cpp)
         self.assertEqual(len(rows), 31)
         self.assertEqual([r[0] for r in rows], sorted(r[0] for r in rows))
@@ -128,6 +129,23 @@ class ExampleOutputTest(unittest.TestCase):
         self.assertIn(("1018", "kRecord", "2"), rows)
         self.assertIn(("2006", "kDomain", "1"), rows)
         self.assertIn(("1000", "kVar", "1"), rows)
+
+    def test_objects_of_one_shape_share_rows(self):
+        # The two RPDO communication parameters: one run of rows (from row 14), each object
+        # at its own bases, and a check that the second one's values lie where the rows say.
+        self.assertIn("    // 0x1400 RPDO1 communication parameter, 0x1401\n", self.cpp)
+        self.assertIn("{0x1400, costa::od::ObjectCode::kRecord, 3, 14, offsetof(Values, "
+                      "x1400_rpdo1_communication_parameter), offsetof(Constants, "
+                      "x1400_rpdo1_communication_parameter)},", self.cpp)
+        self.assertIn("{0x1401, costa::od::ObjectCode::kRecord, 3, 14, offsetof(Values, "
+                      "x1401_rpdo2_communication_parameter), offsetof(Constants, "
+                      "x1401_rpdo2_communication_parameter)},", self.cpp)
+        self.assertIn("static_assert(offsetof(Values::X1401Rpdo2CommunicationParameter, "
+                      "cob_id_used_by_rpdo) == offsetof(Values::X1400Rpdo1CommunicationParameter,"
+                      " cob_id_used_by_rpdo), \"0x1401:1 lies where the row it shares says\");",
+                      self.cpp)
+        # Objects of another shape (the TPDO's parameter has five rows) have rows of their own.
+        self.assertIn("{0x1800, costa::od::ObjectCode::kRecord, 5, 19, ", self.cpp)
 
     def test_limits_table(self):
         self.assertIn("{0xFFFFFFFFFFFFFF9CULL, 0x0000000000000064ULL},", self.cpp)  # int8
@@ -165,10 +183,10 @@ class ExampleOutputTest(unittest.TestCase):
                        if not e.in_rom and e.has_storage
                        and (any(e.default) if isinstance(e.default, bytes) else e.default != 0))
         self.assertIn("const costa::od::Definition kDefinition = {\n    kObjects,\n    31,\n"
-                      "    &kConstants,\n    kDefaults,\n    kDefaultBytes,\n    "
+                      "    kRows,\n    &kConstants,\n    kDefaults,\n    kDefaultBytes,\n    "
                       f"{defaults},\n    sizeof(Values),\n"
                       f"    0x{layout:08X}U,\n    \"Costa example device\",\n    kLimits,\n"
-                      "    &costa::od::checkRealLimits,\n    kObjectSlots,\n    6,\n    0x24U,\n};", self.cpp)
+                      "    &costa::od::checkRealLimits,\n    kObjectSlots,\n    26,\n    0x24U,\n};", self.cpp)
 
     def test_size_checks(self):
         self.assertIn('static_assert(sizeof(Values::x2003_serial_text) == 21, '
@@ -239,7 +257,7 @@ class SmallOutputTest(unittest.TestCase):
         self.assertIn("kHeartbeatConsumers = 0;", header)
         self.assertIn("kErrorHistory = 0;", header)
         self.assertNotIn("kLimits", result.files["test_od.cpp"])
-        self.assertIn("    nullptr,\n    nullptr,\n    kObjectSlots,\n    3,\n    0x00U,\n};",
+        self.assertIn("    nullptr,\n    nullptr,\n    kObjectSlots,\n    29,\n    0x00U,\n};",
                       result.files["test_od.cpp"])
 
     def test_literal_helpers(self):

@@ -20,6 +20,9 @@ enum Attribute : uint8_t {
   kTpdoMappable = 1U << 4,    ///< May be mapped into a TPDO.
   kNodeIdRelative = 1U << 5,  ///< Default is `$NODEID + value`.
   kHasLimits = 1U << 6,       ///< SubEntry::limits names a LowLimit/HighLimit row.
+  /// An integer (not a BOOLEAN) in RAM without limits: a write of its size has nothing to
+  /// check. Set by the generator; a row without it takes the full checks.
+  kPlainInteger = 1U << 7,
 };
 
 /// Storage groups: which save/restore command covers a sub-entry (0x1010/0x1011 sub-indices).
@@ -75,9 +78,11 @@ constexpr bool sortedByOffset(const DefaultValue (&defaults)[N]) noexcept {
 }
 
 /// One row of an object: `count` consecutive sub-indices from `subIndex` that share every
-/// property. Value k of the row (sub-index subIndex + k) lies at `offset + k * size`; the
+/// property. Value k of the row (sub-index subIndex + k) lies at `offset + k * size` from its
+/// object's base in the row's block (Object::ramBase, or Object::romBase when kInRom); the
 /// generator merges only fixed-size values stored back to back (array items, record members of
-/// one type). Use EntryRef for one sub-index's properties.
+/// one type). Objects of one shape (the PDO parameters of a kind, VARs of one type and access)
+/// share their rows. Use EntryRef for one sub-index's properties.
 struct SubEntry {
   uint8_t subIndex;    ///< First sub-index of the row.
   uint8_t count;       ///< Sub-indices in the row, 1..255.
@@ -86,8 +91,8 @@ struct SubEntry {
   uint16_t size;       ///< Bytes of one value; capacity for VISIBLE_STRING; 0 for DOMAIN.
   uint8_t group;       ///< StorageGroup.
   uint8_t limits;      ///< 0: no limits; else 1 + the row of Definition::limits.
-  uint16_t offset;     ///< Of the first value, in the RAM values block, or in the ROM
-                       ///< constants block when kInRom.
+  uint16_t offset;     ///< Of the first value, from the object's base in the RAM values
+                       ///< block, or in the ROM constants block when kInRom.
 };
 
 /// Object codes of CiA 301 (EDS ObjectType).
@@ -98,18 +103,23 @@ enum class ObjectCode : uint8_t {
   kRecord = 0x09,
 };
 
-/// One index of the dictionary; `rows` is sorted by sub-index.
+/// One index of the dictionary: `rowCount` rows from Definition::rows[firstRow], sorted by
+/// sub-index (rowsOf()), and where its values begin in each block. 10 bytes, no pointer: the
+/// rows of objects of one shape are one run of Definition::rows.
 struct Object {
   uint16_t index;
   ObjectCode code;
   uint8_t rowCount;
-  const SubEntry* rows;
+  uint16_t firstRow;
+  uint16_t ramBase;  ///< Offset of its values in the RAM block (its rows' offsets add to it).
+  uint16_t romBase;  ///< Offset of its values in the ROM constants block.
 };
 
 /// A whole dictionary. `objects` is sorted by index.
 struct Definition {
   const Object* objects;
   uint16_t objectCount;
+  const SubEntry* rows;          ///< Every object's rows (Object::firstRow).
   const void* constants;         ///< ROM block holding `const` values.
   const DefaultValue* defaults;  ///< The non-zero defaults of the RAM block, by offset.
   const uint8_t* defaultBytes;   ///< Bytes of the defaults longer than 4 bytes.
@@ -119,21 +129,35 @@ struct Definition {
   const char* deviceName;     ///< Name of the device description the tables were generated from.
   const Limits* limits;       ///< Rows named by SubEntry::limits (null when none has limits).
   RealLimitCheck realLimits;  ///< Null unless a REAL entry has limits.
-  /// Open-addressed hash table of the objects: 2^objectSlotBits entries, each 0 (empty) or
+  /// Open-addressed hash table of the objects: 2^(32 - objectSlotShift) entries, each 0 (empty) or
   /// 1 + the object's position in `objects`; see objectSlotOf(). Null: lookups search the
-  /// sorted `objects` instead (a definition made by hand).
+  /// sorted `objects` instead (a definition made by hand; every generated one built for size,
+  /// -Os, where the binary search spares the table and its code).
   const uint16_t* objectSlots;
-  uint8_t objectSlotBits;
+  uint8_t objectSlotShift;  ///< 32 - log2 of the table's size (objectSlotOf())
   /// Bit n set: the dummy entry of data type 0x000n (n = 2..7, INTEGER8..UNSIGNED32) may be
   /// mapped into an RPDO (the EDS's [DummyUsage]). 0: none may.
   uint8_t dummyUsage;
 };
 
 /// The first slot of the object hash table to look at for `index`: Fibonacci hashing of the
-/// 16-bit index; collisions go on to the next slot (linear probing). The generator builds the
-/// table with this very function.
-constexpr uint32_t objectSlotOf(uint16_t index, uint8_t bits) noexcept {
-  return ((static_cast<uint32_t>(index) * 40503U) & 0xFFFFU) >> (16U - bits);
+/// 16-bit index (its product with 40503, 2^16 over the golden ratio, modulo 2^16, whose top
+/// 32 - `shift` bits are the slot: computed in the top half of a 32-bit product, a multiply and
+/// a shift); collisions go on to the next slot (linear probing). The generator builds the table
+/// with this very function.
+constexpr uint32_t objectSlotOf(uint16_t index, uint8_t shift) noexcept {
+  return (static_cast<uint32_t>(index) * (40503U << 16U)) >> shift;
+}
+
+/// The rows of `object` (Object::rowCount of them).
+constexpr const SubEntry* rowsOf(const Definition& definition, const Object& object) noexcept {
+  return definition.rows + object.firstRow;
+}
+
+/// Offset of value `k` of `row` of `object` in the row's block.
+constexpr uint32_t valueOffset(const Object& object, const SubEntry& row, uint32_t k) noexcept {
+  return ((row.attributes & kInRom) != 0U ? object.romBase : object.ramBase) + row.offset +
+         k * row.size;
 }
 
 /// True when the RAM values of `objects` lie in the order of their indices and sub-indices (the
@@ -141,29 +165,31 @@ constexpr uint32_t objectSlotOf(uint16_t index, uint8_t bits) noexcept {
 /// The generator checks its tables with it at compile time; ObjectDictionary::restoreDefaults()
 /// depends on it.
 template <size_t N>
-constexpr bool ramInIndexOrder(const Object (&objects)[N]) noexcept {
+constexpr bool ramInIndexOrder(const Object (&objects)[N], const SubEntry* rows) noexcept {
   uint32_t end = 0;
   for (size_t i = 0; i < N; ++i) {
     for (unsigned r = 0; r < objects[i].rowCount; ++r) {
-      const SubEntry& row = objects[i].rows[r];
+      const SubEntry& row = rows[objects[i].firstRow + r];
       if ((row.attributes & kInRom) != 0U || row.type == DataType::kDomain) {
         continue;
       }
-      if (row.offset < end) {
+      const uint32_t offset = valueOffset(objects[i], row, 0);
+      if (offset < end) {
         return false;
       }
       const uint32_t bytes = row.type == DataType::kVisibleString ? row.size + 1U : row.size;
-      end = row.offset + row.count * bytes;
+      end = offset + row.count * bytes;
     }
   }
   return true;
 }
 
 /// Number of sub-indices an object has (sub-index 0 included).
-constexpr unsigned entryCount(const Object& object) noexcept {
+constexpr unsigned entryCount(const Definition& definition, const Object& object) noexcept {
   unsigned count = 0;
+  const SubEntry* rows = rowsOf(definition, object);
   for (unsigned row = 0; row < object.rowCount; ++row) {
-    count += object.rows[row].count;
+    count += rows[row].count;
   }
   return count;
 }

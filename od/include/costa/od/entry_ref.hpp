@@ -8,12 +8,20 @@
 
 namespace costa::od {
 
-/// A located sub-index: its object, the row describing it and the sub-index itself. Plain data,
-/// valid as long as the Definition it points into (ROM). Every accessor is O(1).
+/// A located sub-index: its object, the row describing it, the sub-index itself and where its
+/// value lies. Plain data, valid as long as the Definition it points into (ROM). Every accessor
+/// is O(1). Made by at() (or a dictionary's find()), which computes the offset once.
 struct EntryRef {
   const Object* object = nullptr;
   const SubEntry* row = nullptr;
   uint8_t sub = 0;
+  uint16_t blockOffset = 0;  ///< offset(): computed by at()
+
+  /// Sub-index `sub` of `row` (one of `object`'s rows, which holds it).
+  static constexpr EntryRef at(const Object& object, const SubEntry& row, uint8_t sub) noexcept {
+    return EntryRef{&object, &row, sub,
+                    static_cast<uint16_t>(od::valueOffset(object, row, sub - row.subIndex))};
+  }
 
   bool valid() const noexcept { return row != nullptr; }
   uint16_t index() const noexcept { return object->index; }
@@ -26,9 +34,7 @@ struct EntryRef {
   uint8_t group() const noexcept { return row->group; }
   bool inRom() const noexcept { return has(kInRom); }
   /// Offset of the value in its block (the RAM values, or the ROM constants when inRom()).
-  uint32_t offset() const noexcept {
-    return row->offset + static_cast<uint32_t>(sub - row->subIndex) * row->size;
-  }
+  uint32_t offset() const noexcept { return blockOffset; }
 };
 
 /// Every sub-index of a definition, objects by index and sub-indices in order:
@@ -61,11 +67,9 @@ class Entries {
       while (object_ < definition_->objectCount) {
         const Object& object = definition_->objects[object_];
         if (row_ < object.rowCount) {
-          const SubEntry& row = object.rows[row_];
+          const SubEntry& row = rowsOf(*definition_, object)[row_];
           if (step_ < row.count) {
-            ref_.object = &object;
-            ref_.row = &row;
-            ref_.sub = static_cast<uint8_t>(row.subIndex + step_);
+            ref_ = EntryRef::at(object, row, static_cast<uint8_t>(row.subIndex + step_));
             return;
           }
           ++row_;
@@ -93,12 +97,14 @@ class Entries {
   const Definition& definition_;
 };
 
-/// The sub-index `sub` of `object`; an invalid ref when the object has none. O(rows).
-inline EntryRef locate(const Object& object, uint8_t sub) noexcept {
+/// The sub-index `sub` of `object` (one of `definition`'s); an invalid ref when the object has
+/// none. O(rows).
+inline EntryRef locate(const Definition& definition, const Object& object, uint8_t sub) noexcept {
+  const SubEntry* rows = rowsOf(definition, object);
   for (uint8_t i = 0; i < object.rowCount; ++i) {
-    const SubEntry& row = object.rows[i];
+    const SubEntry& row = rows[i];
     if (sub >= row.subIndex && static_cast<unsigned>(sub - row.subIndex) < row.count) {
-      return EntryRef{&object, &row, sub};
+      return EntryRef::at(object, row, sub);
     }
   }
   return EntryRef{};

@@ -39,6 +39,10 @@ class ObjectDictionary {
 
   /// Locates an object; nullptr when absent. O(log n).
   const Object* findObject(uint16_t index) const noexcept;
+  /// Number of sub-indices of `object` (sub-index 0 included). O(rows).
+  unsigned entryCount(const Object& object) const noexcept {
+    return od::entryCount(*definition_, object);
+  }
   /// Locates a sub-index; fails with kNoObject or kNoSubIndex. O(log n).
   AbortCode find(uint16_t index, uint8_t subIndex, EntryRef* out) const noexcept;
   /// Locates a sub-index; invalid ref when absent.
@@ -81,12 +85,12 @@ class ObjectDictionary {
 
   /// check() and, when it passes, stores the value. A VISIBLE_STRING shorter than its
   /// capacity is padded with zeros. The usual write (a whole integer of 1, 2 or 4 bytes
-  /// without limits, in RAM, on a little-endian CPU that stores at any address, not built for
-  /// size) is a test and a copy.
+  /// without limits, in RAM: kPlainInteger, on a little-endian CPU that stores at any address,
+  /// not built for size) is a test and a copy.
   AbortCode write(const EntryRef& ref, const uint8_t* source, size_t length) noexcept {
     const SubEntry& row = *ref.row;
     if (kExpandFastPaths && kLittleEndianHost && kUnalignedAccess && length == row.size &&
-        row.limits == 0U && (row.attributes & kInRom) == 0U && isInteger(row.type)) {
+        (row.attributes & kPlainInteger) != 0U) {
       uint8_t* target = values_ + ref.offset();
       switch (length) {
         case 1: *target = *source; return AbortCode::kNone;
@@ -181,9 +185,10 @@ class ObjectDictionary {
   /// Restores the defaults of every RAM row of `object` for which `wanted(row)` holds.
   template <typename Wanted>
   void restoreRows(const Object& object, Wanted wanted) noexcept;
-  void restoreRow(const SubEntry& row) noexcept;
-  /// Adds the node-id to every value of a `$NODEID` row (after its defaults were written).
-  void addNodeId(const SubEntry& row) noexcept;
+  void restoreRow(const Object& object, const SubEntry& row) noexcept;
+  /// Adds the node-id to every value of a `$NODEID` row of `object` (after its defaults were
+  /// written).
+  void addNodeId(const Object& object, const SubEntry& row) noexcept;
   AbortCode writeChecked(const EntryRef& ref, const uint8_t* source, size_t length) noexcept;
 
   const Definition* definition_;
