@@ -37,9 +37,6 @@ constexpr bool nodeIdConstant(uint8_t attributes) noexcept {
 
 }  // namespace
 
-ObjectDictionary::ObjectDictionary(const Definition& definition, void* values) noexcept
-    : definition_(&definition), values_(static_cast<uint8_t*>(values)) {}
-
 namespace {
 
 // The objects after a collision in the hash table: the next slots, in turn.

@@ -18,17 +18,6 @@ uint8_t errorRegisterBitFor(uint16_t code) noexcept {
   }
 }
 
-EmcyProducer::EmcyProducer(od::ObjectDictionary& dictionary, const EmcyProfile& profile,
-                           NodeClock& clock, EmcyCondition* conditions, size_t conditionCapacity,
-                           PendingEmcy* pending, size_t pendingCapacity) noexcept
-    : dictionary_(dictionary),
-      profile_(profile),
-      clock_(clock),
-      conditions_(conditions),
-      capacity_(conditionCapacity),
-      pending_(pending),
-      pendingCapacity_(pendingCapacity) {}
-
 void EmcyProducer::onResetCommunication() noexcept {
   pendingHead_ = 0;
   pendingCount_ = 0;

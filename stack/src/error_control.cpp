@@ -5,20 +5,6 @@
 
 namespace costa {
 
-ErrorControl::ErrorControl(od::ObjectDictionary& dictionary, const ErrorControlProfile& profile,
-                           TransmitPath& tx, EmcyProducer& emcy, NodeClock& clock,
-                           const NodeListeners& listeners, NmtStateMachine& nmt,
-                           HeartbeatMonitor* monitors, size_t monitorCapacity) noexcept
-    : dictionary_(dictionary),
-      profile_(profile),
-      tx_(tx),
-      emcy_(emcy),
-      clock_(clock),
-      listeners_(listeners),
-      nmt_(nmt),
-      guarding_(dictionary, tx, clock),
-      consumer_(dictionary, clock, monitors, monitorCapacity) {}
-
 void ErrorControl::reset(uint8_t nodeId) noexcept {
   // Monitoring starts over: the errors it had found are gone with it (EMCY 0x8130 cleared).
   if (profile_.emcyForErrors) {

@@ -14,12 +14,6 @@ constexpr uint16_t kApplicationLast = 0xFFFF;
 
 }  // namespace
 
-NmtStateMachine::NmtStateMachine(const Services& services, uint8_t nodeId) noexcept
-    : services_(services),
-      nodeId_(nodeId),
-      pendingNodeId_(nodeId),
-      automaticStart_(services.settings.automaticStart) {}
-
 void NmtStateMachine::powerOn() noexcept {
   services_.stored.layOut();
   powerOn_ = true;

@@ -14,14 +14,6 @@ constexpr uint16_t kMappingOffset = 0x200;
 
 }  // namespace
 
-PdoEngine::PdoEngine(PdoContext& context, RpdoChannel* rpdos, size_t rpdoCapacity,
-                     TpdoChannel* tpdos, size_t tpdoCapacity) noexcept
-    : context_(context),
-      rpdos_(rpdos),
-      rpdoCapacity_(rpdoCapacity),
-      tpdos_(tpdos),
-      tpdoCapacity_(tpdoCapacity) {}
-
 void PdoEngine::bind() noexcept {
   const od::Definition& definition = context_.access.dictionary().definition();
   rpdoCount_ = 0;

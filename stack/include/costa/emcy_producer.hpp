@@ -57,7 +57,14 @@ class EmcyProducer : public ObjectHook {
 
   EmcyProducer(od::ObjectDictionary& dictionary, const EmcyProfile& profile, NodeClock& clock,
                EmcyCondition* conditions, size_t conditionCapacity, PendingEmcy* pending,
-               size_t pendingCapacity) noexcept;
+               size_t pendingCapacity) noexcept
+      : dictionary_(dictionary),
+        profile_(profile),
+        clock_(clock),
+        conditions_(conditions),
+        capacity_(conditionCapacity),
+        pending_(pending),
+        pendingCapacity_(pendingCapacity) {}
 
   void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
 

@@ -48,7 +48,16 @@ class ErrorControl {
   ErrorControl(od::ObjectDictionary& dictionary, const ErrorControlProfile& profile,
                TransmitPath& tx, EmcyProducer& emcy, NodeClock& clock,
                const NodeListeners& listeners, NmtStateMachine& nmt, HeartbeatMonitor* monitors,
-               size_t monitorCapacity) noexcept;
+               size_t monitorCapacity) noexcept
+      : dictionary_(dictionary),
+        profile_(profile),
+        tx_(tx),
+        emcy_(emcy),
+        clock_(clock),
+        listeners_(listeners),
+        nmt_(nmt),
+        guarding_(dictionary, tx, clock),
+        consumer_(dictionary, clock, monitors, monitorCapacity) {}
 
   /// Reset communication: node guarding restarts (toggle from the profile's start value, life
   /// guarding stopped until the first request), every heartbeat consumer entry starts over.

@@ -72,7 +72,11 @@ class NmtStateMachine {
     FrameRouter& router;
   };
 
-  NmtStateMachine(const Services& services, uint8_t nodeId) noexcept;
+  NmtStateMachine(const Services& services, uint8_t nodeId) noexcept
+      : services_(services),
+        nodeId_(nodeId),
+        pendingNodeId_(nodeId),
+        automaticStart_(services.settings.automaticStart) {}
 
   NmtState state() const noexcept { return state_; }
   /// The node-id in use (1..127), or 0xFF: none yet.

@@ -27,7 +27,12 @@ class PdoEngine : public ObjectHook {
   static constexpr uint16_t kLast = 0x1BFF;
 
   PdoEngine(PdoContext& context, RpdoChannel* rpdos, size_t rpdoCapacity, TpdoChannel* tpdos,
-            size_t tpdoCapacity) noexcept;
+            size_t tpdoCapacity) noexcept
+      : context_(context),
+        rpdos_(rpdos),
+        rpdoCapacity_(rpdoCapacity),
+        tpdos_(tpdos),
+        tpdoCapacity_(tpdoCapacity) {}
 
   /// Finds the PDO communication objects in the dictionary (0x1400..0x15FF, 0x1800..0x19FF) and
   /// binds one channel to each, up to the capacities (PDOs beyond them are not served). Call

@@ -90,7 +90,7 @@ class RpdoChannel {
  private:
   /// Writes `data` into the mapped entries, with the listeners' notifications around it.
   COSTA_HOT_INLINE bool apply(PdoContext& context, const uint8_t* data) noexcept {
-    if (!map_.plain()) {
+    if (!kExpandFastPaths || !map_.plain()) {  // (for size: the one way)
       return applyChecked(context, data);
     }
     notifyWriting(context);

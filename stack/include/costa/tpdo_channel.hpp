@@ -48,7 +48,9 @@ class TpdoChannel {
   /// `expiry` (end of the SYNC window) so that they are dropped if they cannot go out in time.
   COSTA_HOT_INLINE void onSync(PdoContext& context, uint8_t counter, Microseconds now,
                                Microseconds expiry) noexcept {
-    if (syncPeriod_ != 0U) {  // running, valid, synchronous cyclic and counting
+    // Running, valid, synchronous cyclic and counting: the usual case, expanded where speed
+    // counts; onOtherSync() does the same (for size: the one way).
+    if (kExpandFastPaths && syncPeriod_ != 0U) {
       if (++syncCount_ >= syncPeriod_) {
         syncCount_ = 0;
         sendNow(context, expiry);

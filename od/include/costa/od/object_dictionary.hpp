@@ -27,7 +27,8 @@ void copyDefault(const Definition& definition, const EntryRef& ref, uint8_t* des
 /// Not thread-safe: call from the context that runs the node.
 class ObjectDictionary {
  public:
-  ObjectDictionary(const Definition& definition, void* values) noexcept;
+  ObjectDictionary(const Definition& definition, void* values) noexcept
+      : definition_(&definition), values_(static_cast<uint8_t*>(values)) {}
 
   const Definition& definition() const noexcept { return *definition_; }
   void* values() noexcept { return values_; }
