@@ -105,20 +105,8 @@ void ObjectDictionary::addNodeId(const Object& object, const SubEntry& row) noex
   }
 }
 
-template <typename Wanted>
-void ObjectDictionary::restoreRows(const Object& object, Wanted wanted) noexcept {
-  const SubEntry* rows = rowsOf(*definition_, object);
-  for (uint8_t i = 0; i < object.rowCount; ++i) {
-    if (wanted(rows[i])) {
-      restoreRow(object, rows[i]);
-    }
-  }
-}
-
-namespace {
-// Calls visit(object, row) for every row of the objects whose index lies in [first, last].
-template <typename Visit>
-void forEachRowIn(const Definition& definition, uint16_t first, uint16_t last, Visit visit) {
+void ObjectDictionary::restoreRows(uint16_t first, uint16_t last, unsigned group) noexcept {
+  const Definition& definition = *definition_;
   for (size_t i = 0; i < definition.objectCount; ++i) {
     const Object& object = definition.objects[i];
     if (object.index > last) {
@@ -129,53 +117,19 @@ void forEachRowIn(const Definition& definition, uint16_t first, uint16_t last, V
     }
     const SubEntry* rows = rowsOf(definition, object);
     for (uint8_t r = 0; r < object.rowCount; ++r) {
-      visit(object, rows[r]);
+      if (group == kAnyGroup || rows[r].group == group) {
+        restoreRow(object, rows[r]);
+      }
     }
   }
 }
-}  // namespace
 
 void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
-  // The RAM values of [first, last] are one range of the block (ramInIndexOrder): zero it,
-  // then write the non-zero defaults that fall in it, then add the node-id where it belongs.
-  const Definition& definition = *definition_;
-  size_t begin = SIZE_MAX;
-  size_t end = 0;
-  if (first == 0U && last == UINT16_MAX) {
-    begin = 0;
-    end = definition.valuesSize;
-  } else {
-    forEachRowIn(definition, first, last,
-                 [&begin, &end](const Object& object, const SubEntry& row) {
-                   if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
-                     return;
-                   }
-                   const size_t offset = valueOffset(object, row, 0);
-                   begin = begin == SIZE_MAX ? offset : begin;
-                   end = offset + row.count * storageBytes(row);
-                 });
-  }
-  if (begin == SIZE_MAX) {
-    return;
-  }
-  fillBytes(values_ + begin, 0, end - begin);
-  const DefaultValue* stop = definition.defaults + definition.defaultCount;
-  for (const DefaultValue* value = firstDefaultFrom(definition, begin);
-       value < stop && value->offset < end; ++value) {
-    writeDefault(definition, *value, values_ + value->offset);
-  }
-  forEachRowIn(definition, first, last, [this](const Object& object, const SubEntry& row) {
-    if ((row.attributes & (kNodeIdRelative | kInRom)) == kNodeIdRelative) {
-      addNodeId(object, row);
-    }
-  });
+  restoreRows(first, last, kAnyGroup);
 }
 
 void ObjectDictionary::restoreGroupDefaults(uint8_t group) noexcept {
-  for (size_t i = 0; i < definition_->objectCount; ++i) {
-    restoreRows(definition_->objects[i],
-                [group](const SubEntry& row) { return row.group == group; });
-  }
+  restoreRows(0, UINT16_MAX, group);
 }
 
 }  // namespace costa::od

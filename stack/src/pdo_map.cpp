@@ -23,15 +23,13 @@ bool isDummy(uint16_t index) noexcept {
   return index >= kFirstDummy && index <= kLastDummy;
 }
 
-}  // namespace
-
-AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t value,
-                             PdoDirection direction) noexcept {
+// checkEntry()'s checks of `value`; `*ref` is its entry (not valid for 0 or a dummy entry).
+AbortCode checkValue(const od::ObjectDictionary& dictionary, uint32_t value, PdoDirection direction,
+                     od::EntryRef* ref) noexcept {
   if (value == 0U) {
     return AbortCode::kNone;
   }
   const auto index = static_cast<uint16_t>(value >> 16U);
-  const auto subIndex = static_cast<uint8_t>(value >> 8U);
   const auto bits = static_cast<uint8_t>(value);
   if (isDummy(index)) {  // a gap in an RPDO, where the dictionary's [DummyUsage] allows it
     if (direction != PdoDirection::kReceive ||
@@ -40,20 +38,27 @@ AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t va
     }
     return bits == dummyBytes(index) * 8U ? AbortCode::kNone : AbortCode::kParameterIncompatible;
   }
-  od::EntryRef ref;
-  const AbortCode found = dictionary.find(index, subIndex, &ref);
+  const AbortCode found = dictionary.find(index, static_cast<uint8_t>(value >> 8U), ref);
   if (found != AbortCode::kNone) {
     return found;
   }
   const od::Attribute needed =
       direction == PdoDirection::kReceive ? od::kRpdoMappable : od::kTpdoMappable;
-  if (!ref.has(needed)) {
+  if (!ref->has(needed)) {
     return AbortCode::kNotMappable;
   }
-  if (ref.size() == 0U || bits != ref.size() * 8U) {
+  if (ref->size() == 0U || bits != ref->size() * 8U) {
     return AbortCode::kParameterIncompatible;
   }
   return AbortCode::kNone;
+}
+
+}  // namespace
+
+AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t value,
+                             PdoDirection direction) noexcept {
+  od::EntryRef ref;
+  return checkValue(dictionary, value, direction, &ref);
 }
 
 AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, size_t count,
@@ -67,26 +72,26 @@ AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, si
     return AbortCode::kMappingTooLong;
   }
   const od::ObjectDictionary& dictionary = access.dictionary();
-  PdoMap resolved;
   for (size_t i = 0; i < count; ++i) {
-    const AbortCode verdict = checkEntry(dictionary, values[i], direction);
+    od::EntryRef ref;
+    const AbortCode verdict = checkValue(dictionary, values[i], direction, &ref);
     if (verdict != AbortCode::kNone) {
+      clear();  // refused: empty, as before the first entry
       return verdict;
     }
     if (values[i] == 0U) {
       continue;
     }
-    const auto index = static_cast<uint16_t>(values[i] >> 16U);
-    const auto subIndex = static_cast<uint8_t>(values[i] >> 8U);
-    const size_t slot = resolved.count_++;
-    Slot& entry = resolved.slots_[slot];
+    const size_t slot = count_++;
+    const auto bit = static_cast<uint8_t>(1U << slot);
+    Slot& entry = slots_[slot];
     entry.length = static_cast<uint8_t>((values[i] & 0xFFU) / 8U);
-    resolved.bytes_ = static_cast<uint8_t>(resolved.bytes_ + entry.length);
-    if (isDummy(index)) {
-      resolved.markMask_ = static_cast<uint8_t>(resolved.markMask_ | (1U << slot));
+    bytes_ = static_cast<uint8_t>(bytes_ + entry.length);
+    if (!ref.valid()) {  // a dummy entry
+      markMask_ |= bit;
       continue;
     }
-    const od::EntryRef ref = dictionary.find(index, subIndex);
+    const uint16_t index = ref.index();
     // A TPDO copies constants too, unless the node-id is added to them when read.
     const bool constant =
         ref.inRom() && direction == PdoDirection::kTransmit && !ref.has(od::kNodeIdRelative);
@@ -99,15 +104,14 @@ AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, si
     if (copied) {
       entry.where = static_cast<uint16_t>(ref.offset());
       if (constant) {
-        resolved.markMask_ = static_cast<uint8_t>(resolved.markMask_ | (1U << slot));
+        markMask_ |= bit;
       }
     } else {
       entry.where = index;
-      entry.subIndex = subIndex;
-      resolved.accessMask_ = static_cast<uint8_t>(resolved.accessMask_ | (1U << slot));
+      entry.subIndex = ref.subIndex();
+      accessMask_ |= bit;
     }
   }
-  *this = resolved;
   return AbortCode::kNone;
 }
 

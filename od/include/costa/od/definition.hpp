@@ -160,10 +160,10 @@ constexpr uint32_t valueOffset(const Object& object, const SubEntry& row, uint32
          k * row.size;
 }
 
-/// True when the RAM values of `objects` lie in the order of their indices and sub-indices (the
-/// generator's layout): the values of a range of indices are then one range of the RAM block.
-/// The generator checks its tables with it at compile time; ObjectDictionary::restoreDefaults()
-/// depends on it.
+/// True when the RAM values of `objects` lie in the order of their indices and sub-indices, as
+/// the generator lays them out (it checks its tables with it at compile time): the values of a
+/// range of indices are one range of the RAM block, and a dump of the block reads in the
+/// dictionary's order.
 template <size_t N>
 constexpr bool ramInIndexOrder(const Object (&objects)[N], const SubEntry* rows) noexcept {
   uint32_t end = 0;

@@ -183,9 +183,12 @@ class ObjectDictionary {
   const uint8_t* address(const EntryRef& ref) const noexcept;
 
  private:
-  /// Restores the defaults of every RAM row of `object` for which `wanted(row)` holds.
-  template <typename Wanted>
-  void restoreRows(const Object& object, Wanted wanted) noexcept;
+  /// Restores the defaults of every RAM row of the objects in [first, last] that belongs to
+  /// `group` (kAnyGroup: to any), row by row.
+  static constexpr unsigned kAnyGroup = 0x100;
+  void restoreRows(uint16_t first, uint16_t last, unsigned group) noexcept;
+  /// Zeroes the values of one RAM row, writes the non-zero defaults among them, adds the node-id
+  /// to a `$NODEID` row.
   void restoreRow(const Object& object, const SubEntry& row) noexcept;
   /// Adds the node-id to every value of a `$NODEID` row of `object` (after its defaults were
   /// written).
