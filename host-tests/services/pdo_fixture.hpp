@@ -25,7 +25,7 @@ class PdoEngineTest : public ServiceTest {
         access_(dictionary_, hooks_, services_),
         emcy_(dictionary_, emcyProfile_, clock_, conditions_, 4, pending_, 4),
         router_(routes_, 8),
-        context_{access_, tx_, profile_, emcy_, listeners_, clock_, StaticPdoMappings{}, router_},
+        context_{access_, tx_, profile_, emcy_, listeners_, clock_, router_},
         pdos_(context_, rpdos_, 2, tpdos_, 2) {
     emcy_.setNodeId(kNodeId);
     EXPECT_TRUE(listeners_.add(listener_));

@@ -28,7 +28,9 @@ bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
 }
 
 void RpdoChannel::updateQuietDlc() noexcept {
-  quietDlc_ = tooShort_ || tooLong_ || answer_ != 0U ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+  if constexpr (kExpandFastPaths) {  // (built for size, onFrame() does not look at it)
+    quietDlc_ = tooShort_ || tooLong_ || answer_ != 0U ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+  }
 }
 
 void RpdoChannel::withdrawAnswer(PdoContext& context) const noexcept {

@@ -26,7 +26,7 @@ inline constexpr StaticPdoMapping kPdoMappings[] = {
 /// RTR (P3), EMCY with the error register in the fourth byte and no error-reset frame (P4, S6),
 /// TPDO type 0 at every SYNC and RTR for every type (P6), COB-ID ranges (P7), 0x06090030 for
 /// every range violation (P8), node-guarding toggle starting at 1 (A12), life guarding reported
-/// through the device error register 0x3020 (S5).
+/// through the device error register 0x3020 (S5), the fixed PDO mappings above (P5).
 constexpr DeviceProfile profile() noexcept {
   DeviceProfile p{};
   // The device needs the quirk profiles (solo_target.cpp); its header compiles in any tree.
@@ -42,6 +42,8 @@ constexpr DeviceProfile profile() noexcept {
   p.sdo.distinguishHighAndLowValues = false;
   p.emcy.errorResetFrame = false;
   p.errorControl.emcyForErrors = false;
+  p.pdo.staticMappings =
+      StaticPdoMappings{kPdoMappings, sizeof(kPdoMappings) / sizeof(kPdoMappings[0])};
 #endif
   return p;
 }

@@ -25,15 +25,13 @@ class SoloTarget {
   static constexpr const char* kControlWords = "";
 
   /// The SOLO's constant choices: address 1 until one is stored in 0x3001, the SOLO profile
-  /// (solo_profile.hpp) with its fixed PDO mappings, every M object kept as soon as it is
+  /// (solo_profile.hpp, with its fixed PDO mappings), every M object kept as soon as it is
   /// written (it has no store command), no LSS: it cannot start without a node-id.
   static constexpr NodeSettings settings() noexcept {
     NodeSettings s;
     s.nodeId = 1;
     s.saveParametersOnWrite = true;
     s.profile = profile();
-    s.staticPdoMappings =
-        StaticPdoMappings{kPdoMappings, sizeof(kPdoMappings) / sizeof(kPdoMappings[0])};
     return s;
   }
 

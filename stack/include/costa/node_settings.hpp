@@ -24,7 +24,6 @@ struct NodeSettings {
   DeviceProfile profile{};  ///< Device-specific wire behaviour, one profile per service.
   /// Segmented and block transfer timeout (at most kLongestDelay).
   Microseconds sdoTimeout = millisecondsToMicroseconds(1000);
-  StaticPdoMappings staticPdoMappings{};  ///< Mappings of PDOs without a mapping object.
   /// Non-volatile storage of parameters (0x1010/0x1011) and of the LSS configuration; null: none.
   /// Without effect when parameter storage is compiled out (features::kParameterStorage).
   NvStorage* storage = nullptr;

@@ -18,18 +18,6 @@ class FrameRouter;
 class NodeListeners;
 class TpdoChannel;
 
-/// A device's fixed mapping for a PDO that has no mapping object in its dictionary.
-struct StaticPdoMapping {
-  uint16_t communicationIndex;  ///< 0x1400.. or 0x1800..
-  uint8_t count;
-  uint32_t entries[PdoMap::kMaxEntries];
-};
-
-struct StaticPdoMappings {
-  const StaticPdoMapping* mappings = nullptr;
-  size_t count = 0;
-};
-
 /// Everything a PDO channel needs from its node.
 struct PdoContext {
   ObjectAccess& access;
@@ -38,7 +26,6 @@ struct PdoContext {
   EmcyProducer& emcy;
   const NodeListeners& listeners;
   NodeClock& clock;
-  StaticPdoMappings staticMappings;
   FrameRouter& routes;  ///< told when a PDO's CAN-ID or validity changes
   /// The TPDO channels (set by PdoEngine::bind()): an RPDO's answering TPDO is one of them.
   TpdoChannel* tpdos = nullptr;
@@ -60,7 +47,8 @@ PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept;
 
 /// Resolves into `map` the mapping of the PDO whose communication parameter is at
 /// `communicationIndex`: the mapping object (index + 0x200) when the dictionary has one, else the
-/// device's static mapping (at most PdoMap::kMaxEntries entries of either). False: the mapping
+/// device's static mapping (PdoProfile::staticMappings; at most PdoMap::kMaxEntries entries of
+/// either). False: the mapping
 /// cannot be resolved, and `map` is left empty (PdoMap::resolve).
 bool resolvePdoMapping(PdoContext& context, uint16_t communicationIndex, PdoDirection direction,
                        PdoMap* map) noexcept;

@@ -20,6 +20,7 @@
 #include "costa/object_access.hpp"
 #include "costa/od/bytes.hpp"
 #include "costa/od/object_dictionary.hpp"
+#include "costa/pdo_profile.hpp"
 
 namespace costa {
 
@@ -32,7 +33,7 @@ enum class PdoDirection : uint8_t { kReceive, kTransmit };
 
 class PdoMap {
  public:
-  static constexpr size_t kMaxEntries = 8;  ///< 64 bits at byte granularity.
+  static constexpr size_t kMaxEntries = kMaxPdoEntries;  ///< 64 bits at byte granularity.
   static constexpr size_t kMaxBytes = 8;
 
   /// Checks one mapping value for `direction`: kNoObject / kNoSubIndex (no such entry),

@@ -2,6 +2,7 @@
 // defaults to CiA 301.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "costa/profile_choice.hpp"
@@ -42,6 +43,21 @@ struct CanIdRange {
   constexpr bool contains(uint32_t id) const noexcept { return id >= first && id <= last; }
 };
 
+/// Entries a PDO maps at most: 64 bits at byte granularity.
+inline constexpr size_t kMaxPdoEntries = 8;
+
+/// A device's fixed mapping for a PDO that has no mapping object in its dictionary.
+struct StaticPdoMapping {
+  uint16_t communicationIndex;  ///< 0x1400.. or 0x1800..
+  uint8_t count;
+  uint32_t entries[kMaxPdoEntries];
+};
+
+struct StaticPdoMappings {
+  const StaticPdoMapping* mappings = nullptr;
+  size_t count = 0;
+};
+
 struct PdoProfile {
   // Member names, also where COSTA_PROFILE_CHOICE makes the fields constants.
   // NOLINTBEGIN(readability-identifier-naming)
@@ -59,6 +75,9 @@ struct PdoProfile {
   /// for 0x1400 + n-1), at reception: a device whose TPDOs reply to its RPDOs. CiA 301 has
   /// no such link.
   COSTA_PROFILE_CHOICE bool tpdoAnswersRpdo = false;
+  /// The mappings of PDOs that have no mapping object (0x1600+/0x1A00+) in the dictionary: a
+  /// device with fixed mappings. CiA 301 maps through the mapping objects: none.
+  COSTA_PROFILE_CHOICE StaticPdoMappings staticMappings{};
   // NOLINTEND(readability-identifier-naming)
 };
 
