@@ -3,28 +3,29 @@
 namespace costa {
 namespace {
 
-/// True when `value` does not fit in 32 bits (the size of stored offsets). Takes 64 bits so
-/// that the same code compiles without range warnings where size_t has 32.
-bool exceeds32Bits(uint64_t value) noexcept {
-  return (value >> 32U) != 0U;
+/// `value` in the 32 bits of a stored offset: false when it does not fit. Takes 64 bits so that
+/// the same code compiles without range warnings where size_t has 32.
+bool fits32(uint64_t value, uint32_t* out) noexcept {
+  *out = static_cast<uint32_t>(value);
+  return (value >> 32U) == 0U;
 }
 
-/// The bytes of a slot: an image header and `capacity` bytes of payload, rounded up to a
-/// multiple of `alignment` (both below 2^32). Divides 32 bits only (no 64-bit division on small
-/// cores); a header and payload beyond 32 bits are returned as they are, too large anyway.
-uint64_t slotBytes(uint64_t capacity, uint64_t alignment) noexcept {
-  const uint64_t value = kImageHeaderSize + capacity;
-  if (exceeds32Bits(value)) {
-    return value;
+/// The bytes of a slot: an image header and `payload` bytes, rounded up to a multiple of
+/// `alignment` (not 0). False when that does not fit in 32 bits.
+bool slotBytes(uint32_t payload, uint32_t alignment, uint32_t* bytes) noexcept {
+  uint32_t value = 0;
+  if (__builtin_add_overflow(payload, uint32_t{kImageHeaderSize}, &value)) {
+    return false;
   }
-  const uint32_t rest = static_cast<uint32_t>(value) % static_cast<uint32_t>(alignment);
-  return rest == 0U ? value : value + (alignment - rest);
+  const uint32_t rest = value % alignment;
+  return !__builtin_add_overflow(value, rest == 0U ? 0U : alignment - rest, bytes);
 }
 
-/// A stored group and the bytes its RAM values take.
+/// A stored group and the bytes its RAM values take (at most UINT32_MAX: more cannot be laid
+/// out).
 struct GroupBytes {
   uint8_t group;
-  uint64_t bytes;
+  uint32_t bytes;
 };
 
 /// Adds `row` to the group list kept in order of group id (the regions' order). False when the
@@ -44,8 +45,9 @@ bool addRow(const od::SubEntry& row, GroupBytes* groups, size_t* count, size_t c
     groups[at] = GroupBytes{row.group, 0};
     ++*count;
   }
-  if ((row.attributes & od::kInRom) == 0U && row.type != od::DataType::kDomain) {
-    groups[at].bytes += static_cast<uint64_t>(row.size) * row.count;
+  if ((row.attributes & od::kInRom) == 0U && row.type != od::DataType::kDomain &&
+      __builtin_add_overflow(groups[at].bytes, uint32_t{row.size} * row.count, &groups[at].bytes)) {
+    groups[at].bytes = UINT32_MAX;
   }
   return true;
 }
@@ -122,26 +124,32 @@ size_t ParameterStore::groupPayloadLength(uint8_t group) const noexcept {
 
 size_t ParameterStore::computeLayout(Region* regions, size_t* count) const noexcept {
   *count = 0;
-  uint64_t offset = 0;
-  // Offsets are stored as 32 bits: bounding every term keeps the 64-bit sums exact.
+  // Offsets and sizes are stored as 32 bits: any sum beyond them refuses the layout.
+  uint32_t alignment = 0;
+  if (!fits32(slotAlignment_, &alignment)) {
+    return SIZE_MAX;
+  }
+  uint32_t offset = 0;
   const auto place = [&](uint16_t id, uint32_t layout, size_t capacity) {
-    if (*count == kMaxRegions || exceeds32Bits(capacity) || exceeds32Bits(slotAlignment_)) {
-      return false;
-    }
-    const uint64_t slotSize = slotBytes(capacity, slotAlignment_);
-    if (exceeds32Bits(offset + 2U * slotSize)) {
+    uint32_t payload = 0;
+    uint32_t slotSize = 0;
+    uint32_t end = 0;
+    if (*count == kMaxRegions || !fits32(capacity, &payload) ||
+        !slotBytes(payload, alignment, &slotSize) ||
+        __builtin_add_overflow(slotSize, slotSize, &end) ||
+        __builtin_add_overflow(end, offset, &end)) {
       return false;
     }
     if (regions != nullptr) {
       Region& region = regions[*count];
       region.id = id;
       region.layout = layout;
-      region.offset = static_cast<size_t>(offset);
-      region.slotSize = static_cast<size_t>(slotSize);
+      region.offset = offset;
+      region.slotSize = slotSize;
       region.payloadCapacity = capacity;
     }
     ++*count;
-    offset += 2U * slotSize;
+    offset = end;
     return true;
   };
   GroupBytes groups[kMaxRegions] = {};
@@ -150,32 +158,37 @@ size_t ParameterStore::computeLayout(Region* regions, size_t* count) const noexc
     return SIZE_MAX;
   }
   for (size_t i = 0; i < groupCount; ++i) {
-    if (exceeds32Bits(groups[i].bytes) || !place(groups[i].group, dictionary_.definition().layoutId,
-                                                 static_cast<size_t>(groups[i].bytes))) {
+    if (!place(groups[i].group, dictionary_.definition().layoutId, groups[i].bytes)) {
       return SIZE_MAX;
     }
   }
   // Records sit at the end of the medium, so that another set of groups (a firmware update that
   // stores one more parameter) never moves them: the LSS node-id and bit rate survive it.
-  const uint64_t groupsEnd = offset;
-  uint64_t recordBytes = 0;
+  const uint32_t groupsEnd = offset;
+  uint32_t needed = groupsEnd;
   for (size_t i = 0; i < recordCount_; ++i) {
-    if (exceeds32Bits(records_[i].maxLength) || exceeds32Bits(slotAlignment_)) {
+    uint32_t payload = 0;
+    uint32_t slotSize = 0;
+    if (!fits32(records_[i].maxLength, &payload) || !slotBytes(payload, alignment, &slotSize) ||
+        __builtin_add_overflow(needed, slotSize, &needed) ||
+        __builtin_add_overflow(needed, slotSize, &needed)) {
       return SIZE_MAX;
     }
-    recordBytes += 2U * slotBytes(records_[i].maxLength, slotAlignment_);
   }
-  const uint64_t end = exceeds32Bits(storage_.size()) ? 0xFFFFFFFFU : storage_.size();
-  if (end >= groupsEnd + recordBytes) {
-    const auto start = static_cast<uint32_t>(end - recordBytes);
-    offset = start - start % static_cast<uint32_t>(slotAlignment_);  // not below groupsEnd
+  uint32_t end = 0;
+  if (!fits32(storage_.size(), &end)) {
+    end = UINT32_MAX;
+  }
+  if (end >= needed) {
+    const uint32_t start = end - (needed - groupsEnd);
+    offset = start - start % alignment;  // not below groupsEnd
   }
   for (size_t i = 0; i < recordCount_; ++i) {
     if (!place(recordRegion(records_[i].id), 0U, records_[i].maxLength)) {
       return SIZE_MAX;
     }
   }
-  return static_cast<size_t>(groupsEnd + recordBytes);
+  return needed;
 }
 
 size_t ParameterStore::requiredSize() const noexcept {
