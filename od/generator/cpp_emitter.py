@@ -143,8 +143,8 @@ def default_bytes(entry: Entry) -> bytes:
 
 def default_records(device: Device, layout: Layout) -> tuple:
     """The non-zero defaults of the RAM block as od::DefaultValue rows, in the order of their
-    offsets, and the bytes of those longer than 4 bytes: ([(offset expression, size, value,
-    comment)], bytes)."""
+    offsets, and the bytes of those longer than 4 bytes: ([(offset expression, value, comment)],
+    bytes). The value's size is its row's."""
     records, blob = [], bytearray()
     for entry in device.all_entries():
         if entry.in_rom or not entry.has_storage:
@@ -158,8 +158,7 @@ def default_records(device: Device, layout: Layout) -> tuple:
         else:
             value = len(blob)
             blob += data
-        size = f"{len(data)} | costa::od::DefaultValue::kNumeric" if numeric else str(len(data))
-        records.append((layout.offsets[(entry.index, entry.sub)], size, value,
+        records.append((layout.offsets[(entry.index, entry.sub)], value,
                         f"0x{entry.index:04X}:{entry.sub}"))
     return records, bytes(blob)
 
@@ -168,8 +167,9 @@ def _defaults_text(device: Device, layout: Layout) -> list:
     records, blob = default_records(device, layout)
     lines = ["/// Every non-zero default of the RAM block (the rest is zero), by offset.",
              "constexpr costa::od::DefaultValue kDefaults[] = {"]
-    for offset, size, value, label in records:
-        lines.append(f"{_INDENT * 2}{{{offset}, {size}, 0x{value:X}U}},  // {label}")
+    for offset, value, label in records:
+        lines.append(f"{_INDENT * 2}{{{offset}, 0x{value & 0xFFFF:X}U, 0x{value >> 16:X}U}},"
+                     f"  // {label} = 0x{value:X}")
     if not records:
         lines.append(f"{_INDENT * 2}{{0, 0, 0}},  // none: keeps the array non-empty")
     lines += ["};",

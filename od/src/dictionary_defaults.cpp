@@ -29,17 +29,17 @@ const DefaultValue* firstDefaultFrom(const Definition& definition, size_t offset
   return low;
 }
 
-// Writes one default at `target`.
-void writeDefault(const Definition& definition, const DefaultValue& value,
+// Writes one default of `row` (storage bytes, whether it is a number) at `target`.
+void writeDefault(const Definition& definition, const SubEntry& row, const DefaultValue& value,
                   uint8_t* target) noexcept {
-  const size_t bytes = value.bytes();
-  if (value.numeric()) {
-    const uint64_t raw = bytes <= 4U
-                             ? value.value
-                             : loadLittleEndianBytes(definition.defaultBytes + value.value, bytes);
+  const size_t bytes = storageBytes(row);
+  if (isNumeric(row.type)) {
+    const uint64_t raw =
+        bytes <= 4U ? value.value()
+                    : loadLittleEndianBytes(definition.defaultBytes + value.value(), bytes);
     storeNative(target, raw, bytes);
   } else {
-    copyBytes(target, definition.defaultBytes + value.value, bytes);
+    copyBytes(target, definition.defaultBytes + value.value(), bytes);
   }
 }
 
@@ -50,7 +50,7 @@ void copyDefault(const Definition& definition, const EntryRef& ref, uint8_t* des
   fillBytes(destination, 0, bytes);
   const DefaultValue* value = firstDefaultFrom(definition, ref.offset());
   if (value < definition.defaults + definition.defaultCount && value->offset == ref.offset()) {
-    writeDefault(definition, *value, destination);
+    writeDefault(definition, *ref.row, *value, destination);
   }
 }
 
@@ -65,7 +65,7 @@ void ObjectDictionary::restoreRow(const Object& object, const SubEntry& row) noe
   const DefaultValue* last = definition.defaults + definition.defaultCount;
   for (const DefaultValue* value = firstDefaultFrom(definition, begin);
        value < last && value->offset < end; ++value) {
-    writeDefault(definition, *value, values_ + value->offset);
+    writeDefault(definition, row, *value, values_ + value->offset);
   }
   if ((row.attributes & kNodeIdRelative) != 0U) {
     addNodeId(object, row);

@@ -156,20 +156,18 @@ class ExampleOutputTest(unittest.TestCase):
         for literal in ('"Costa Example",', "{-7, -7},", "{0x01U, 0x02U, 0xA0U},"):
             with self.subTest(literal=literal):
                 self.assertIn(literal, self.cpp)
-        # RAM defaults: the non-zero ones only, numbers of up to 4 bytes as their bits, the
-        # rest (64-bit numbers, strings, octets) as bytes of kDefaultBytes.
-        number = " | costa::od::DefaultValue::kNumeric"
-        for record in ("{offsetof(Values, x1014_cob_id_emcy), 4" + number + ", 0x80U},  "
-                       "// 0x1014:0",
-                       "X2000Integers, int16), 2" + number + ", 0x8000U},  // 0x2000:2",
-                       "X2000Integers, int32), 4" + number + ", 0x80000000U},  // 0x2000:3",
-                       "X2000Integers, int64), 8" + number + ", 0x0U},  // 0x2000:4",
-                       "{offsetof(Values, x2001_real32_value), 4" + number + ", 0x40490FD0U},  "
-                       "// 0x2001:0",
-                       "{offsetof(Values, x2003_serial_text), 21, 0x18U},  // 0x2003:0"):
+        # RAM defaults: the non-zero ones only, numbers of up to 4 bytes as their bits (two
+        # halves), the rest (64-bit numbers, strings, octets) as bytes of kDefaultBytes.
+        for record in ("{offsetof(Values, x1014_cob_id_emcy), 0x80U, 0x0U},  // 0x1014:0 = 0x80",
+                       "X2000Integers, int16), 0x8000U, 0x0U},  // 0x2000:2 = 0x8000",
+                       "X2000Integers, int32), 0x0U, 0x8000U},  // 0x2000:3 = 0x80000000",
+                       "X2000Integers, int64), 0x0U, 0x0U},  // 0x2000:4 = 0x0",
+                       "{offsetof(Values, x2001_real32_value), 0xFD0U, 0x4049U},  "
+                       "// 0x2001:0 = 0x40490FD0",
+                       "{offsetof(Values, x2003_serial_text), 0x18U, 0x0U},  // 0x2003:0 = 0x18"):
             with self.subTest(record=record):
                 self.assertIn(record, self.cpp)
-        self.assertNotIn("x1001_error_register), 1", self.cpp)  # default 0: no record
+        self.assertNotIn("x1001_error_register), 0x", self.cpp)  # default 0: no record
         self.assertIn("0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0xFF, 0xFF", self.cpp)
         self.assertIn('static_assert(costa::od::sortedByOffset(kDefaults), "defaults in the '
                       'order of their offsets");', self.cpp)

@@ -49,20 +49,18 @@ struct Limits {
 using RealLimitCheck = AbortCode (*)(DataType type, uint64_t raw, const Limits& limits);
 AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noexcept;
 
-/// A non-zero default of the RAM block: `bytes()` bytes at `offset`. A number (numeric()) of up
-/// to 4 bytes is `value` itself, stored in the CPU's byte order; anything longer (strings,
-/// octet strings, 64-bit numbers) is the little-endian bytes at Definition::defaultBytes +
-/// `value`. Every byte no DefaultValue covers defaults to zero. A `$NODEID` default is held
-/// without the node-id.
+/// A non-zero default of the RAM block: the value at `offset`, as many bytes as the row holding
+/// it stores there (a VISIBLE_STRING's with its terminating zero). A number of up to 4 bytes is
+/// value() itself, in the CPU's byte order; anything longer (strings, octet strings, 64-bit
+/// numbers) is the little-endian bytes at Definition::defaultBytes + value(). Every byte no
+/// DefaultValue covers defaults to zero. A `$NODEID` default is held without the node-id. Six
+/// bytes: the value is held as two halves.
 struct DefaultValue {
-  static constexpr uint16_t kNumeric = 0x8000;  ///< in `size`: the value is a number
-
   uint16_t offset;
-  uint16_t size;  ///< bytes, | kNumeric for a number
-  uint32_t value;
+  uint16_t low;   ///< value() & 0xFFFF
+  uint16_t high;  ///< value() >> 16
 
-  constexpr size_t bytes() const noexcept { return size & ~kNumeric & 0xFFFFU; }
-  constexpr bool numeric() const noexcept { return (size & kNumeric) != 0U; }
+  constexpr uint32_t value() const noexcept { return low | (uint32_t{high} << 16U); }
 };
 
 /// True when `defaults` are in strictly increasing order of offsets (the generator checks its
