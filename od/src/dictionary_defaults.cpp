@@ -33,13 +33,11 @@ const DefaultValue* firstDefaultFrom(const Definition& definition, size_t offset
 void writeDefault(const Definition& definition, const SubEntry& row, const DefaultValue& value,
                   uint8_t* target) noexcept {
   const size_t bytes = storageBytes(row);
-  if (isNumeric(row.type)) {
-    const uint64_t raw =
-        bytes <= 4U ? value.value()
-                    : loadLittleEndianBytes(definition.defaultBytes + value.value(), bytes);
-    storeNative(target, raw, bytes);
+  const uint8_t* stored = definition.defaultBytes + value.value();
+  if (!isNumeric(row.type) || (bytes > 4U && kLittleEndianHost)) {
+    copyBytes(target, stored, bytes);  // a longer number's little-endian bytes are its own here
   } else {
-    copyBytes(target, definition.defaultBytes + value.value(), bytes);
+    storeNative(target, bytes <= 4U ? value.value() : loadLittleEndianBytes(stored, bytes), bytes);
   }
 }
 

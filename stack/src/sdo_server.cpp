@@ -60,7 +60,7 @@ bool SdoServer::valid() const noexcept {
   if (state_ == State::kIdle) {
     return deadline_ == kNever;
   }
-  if (deadline_ == kNever || toggle_ > 1U) {
+  if (deadline_ == kNever || (toggleBit_ & ~kToggleBit) != 0U) {
     return false;
   }
   switch (state_) {
@@ -158,7 +158,7 @@ void SdoServer::initiateSegmentedDownload(const uint8_t* request, Microseconds n
     return;
   }
   state_ = State::kDownloadSegments;
-  toggle_ = 0;
+  toggleBit_ = 0;
   armTimeout(now);
   const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
   respond(response);
@@ -264,8 +264,7 @@ void SdoServer::initiate(const uint8_t* request, uint8_t ccs, Microseconds now) 
 }
 
 void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexcept {
-  const auto toggle = static_cast<uint8_t>((request[0] >> 4U) & 0x01U);
-  if (toggle != toggle_) {
+  if ((request[0] & kToggleBit) != toggleBit_) {
     abortTransfer(AbortCode::kToggleBit);
     return;
   }
@@ -280,9 +279,9 @@ void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexce
     finishDownload();
     return;
   }
-  const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | (toggle_ << 4U))};
+  const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | toggleBit_)};
   respond(response);
-  toggle_ ^= 1U;
+  toggleBit_ ^= kToggleBit;
 }
 
 void SdoServer::finishDownload() noexcept {
@@ -291,7 +290,7 @@ void SdoServer::finishDownload() noexcept {
     abortTransfer(written);
     return;
   }
-  const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | (toggle_ << 4U))};
+  const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | toggleBit_)};
   respond(response);
   endTransfer(AbortCode::kNone);
 }

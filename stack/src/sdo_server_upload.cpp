@@ -10,10 +10,9 @@ namespace {
 constexpr uint8_t kScsInitiateUploadResponse = 0x40;
 constexpr size_t kSegmentBytes = 7;
 
-// Byte 0 of an upload segment response of `count` bytes.
-uint8_t segmentHeader(uint8_t toggle, size_t count, bool last) noexcept {
-  return static_cast<uint8_t>((static_cast<size_t>(toggle) << 4U) |
-                              ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U));
+// Byte 0 of an upload segment response of `count` bytes (`toggleBit`: 0 or 0x10).
+uint8_t segmentHeader(uint8_t toggleBit, size_t count, bool last) noexcept {
+  return static_cast<uint8_t>(toggleBit | ((kSegmentBytes - count) << 1U) | (last ? 1U : 0U));
 }
 
 }  // namespace
@@ -74,7 +73,7 @@ void SdoServer::answerUpload(const uint8_t* request, size_t size, Microseconds n
   }
   size_ = size;
   done_ = 0;
-  toggle_ = 0;
+  toggleBit_ = 0;
   state_ = State::kUploadSegments;
   armTimeout(now);
   response[0] = kScsInitiateUploadResponse | 0x01U;
@@ -84,7 +83,7 @@ void SdoServer::answerUpload(const uint8_t* request, size_t size, Microseconds n
 
 void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept {
   // Built for size, every segment takes the one general path.
-  if (!kExpandFastPaths || ((request[0] >> 4U) & 0x01U) != toggle_ || !reader_.padded()) {
+  if (!kExpandFastPaths || (request[0] & kToggleBit) != toggleBit_ || !reader_.padded()) {
     uploadOtherSegment(request, now);
     return;
   }
@@ -95,12 +94,12 @@ void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept
   copyBytes(response.data + 1, reader_.snapshot() + done_, kSegmentBytes);
   const size_t remaining = size_ - done_;
   if (remaining > kSegmentBytes) {
-    response.data[0] = static_cast<uint8_t>(toggle_ << 4U);  // 7 bytes, more to come
+    response.data[0] = toggleBit_;  // 7 bytes, more to come
     done_ += kSegmentBytes;
-    toggle_ ^= 1U;
+    toggleBit_ ^= kToggleBit;
     extendTimeout(now);
   } else {
-    response.data[0] = segmentHeader(toggle_, remaining, true);
+    response.data[0] = segmentHeader(toggleBit_, remaining, true);
     done_ = size_;
     endTransfer(AbortCode::kNone);
   }
@@ -108,8 +107,7 @@ void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept
 }
 
 void SdoServer::uploadOtherSegment(const uint8_t* request, Microseconds now) noexcept {
-  const auto toggle = static_cast<uint8_t>((request[0] >> 4U) & 0x01U);
-  if (toggle != toggle_) {
+  if ((request[0] & kToggleBit) != toggleBit_) {
     abortTransfer(AbortCode::kToggleBit);
     return;
   }
@@ -118,7 +116,7 @@ void SdoServer::uploadOtherSegment(const uint8_t* request, Microseconds now) noe
   const size_t count = last ? remaining : kSegmentBytes;
   CanFrame response;
   channel_.address(response);
-  response.data[0] = segmentHeader(toggle_, count, last);
+  response.data[0] = segmentHeader(toggleBit_, count, last);
   const AbortCode read = reader_.read(done_, response.data + 1, count);
   if (read != AbortCode::kNone) {
     abortTransfer(read);
@@ -129,7 +127,7 @@ void SdoServer::uploadOtherSegment(const uint8_t* request, Microseconds now) noe
   if (last) {
     endTransfer(AbortCode::kNone);
   } else {
-    toggle_ ^= 1U;
+    toggleBit_ ^= kToggleBit;
     extendTimeout(now);
   }
 }

@@ -66,6 +66,9 @@ class SdoServer {
   bool valid() const noexcept;
 
  private:
+  /// The toggle bit of a segment's byte 0 (CiA 301 7.2.4.3).
+  static constexpr uint8_t kToggleBit = 0x10;
+
   enum class State : uint8_t {
     kIdle,
     kDownloadSegments,
@@ -160,9 +163,9 @@ class SdoServer {
   od::EntryRef ref_;
   uint16_t index_ = 0;
   uint8_t subIndex_ = 0;
-  uint8_t toggle_ = 0;
-  size_t size_ = 0;  ///< Total bytes of a segmented upload.
-  size_t done_ = 0;  ///< Bytes uploaded so far.
+  uint8_t toggleBit_ = 0;  ///< the toggle of the next segment, where it lies in byte 0: 0 or 0x10
+  size_t size_ = 0;        ///< Total bytes of a segmented upload.
+  size_t done_ = 0;        ///< Bytes uploaded so far.
   Microseconds deadline_ = kNever;
   Microseconds lastCall_ = 0;  ///< `now` of the latest call.
 };
