@@ -65,7 +65,7 @@ class PdoMap {
   /// Copies the mapped values into `out` (bytes() bytes), all in one call, so a frame never
   /// mixes two writes of an entry.
   COSTA_SHARED_INLINE void pack(const ObjectAccess& access, uint8_t* out) const noexcept {
-    if (!kExpandFastPaths || (accessMask_ | markMask_) != 0U) {  // (for size: the one loop)
+    if ((accessMask_ | markMask_) != 0U) {
       packThroughAccess(access, out);
       return;
     }
@@ -83,7 +83,7 @@ class PdoMap {
   /// write()), the entries already written get their previous bytes back and the refusal is
   /// returned: an RPDO is written whole or not at all. With plain(), a copy per entry.
   AbortCode write(ObjectAccess& access, const uint8_t* data) const noexcept {
-    if (!kExpandFastPaths || !plain()) {  // (for size: the one loop)
+    if (!plain()) {
       return writeThroughAccess(access, data);
     }
     auto* values = static_cast<uint8_t*>(access.dictionary().values());

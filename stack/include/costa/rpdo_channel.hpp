@@ -89,9 +89,11 @@ class RpdoChannel {
   void stop() noexcept;
 
  private:
-  /// Writes `data` into the mapped entries, with the listeners' notifications around it.
+  /// Writes `data` into the mapped entries, with the listeners' notifications around it. A plain
+  /// mapping is expanded here where speed counts; built for size, every RPDO takes
+  /// applyChecked(), which then checks only the entries that need it.
   COSTA_HOT_INLINE bool apply(PdoContext& context, const uint8_t* data) noexcept {
-    if (!kExpandFastPaths || !map_.plain()) {  // (for size: the one way)
+    if (!kExpandFastPaths || !map_.plain()) {
       return applyChecked(context, data);
     }
     notifyWriting(context);
