@@ -33,6 +33,30 @@ TEST_F(Tpdo, EventDrivenOnApplicationEvent) {
   EXPECT_TRANSCRIPT("tx 281 [8] FF FF FF FF FF FF FF FF");
 }
 
+// An application event on a DOMAIN (0x2008, the scratch pad, which no PDO can map) signals no
+// TPDO, even one that maps the value at the offset the DOMAIN's reference holds (0x1001, the
+// first of the RAM block: TPDO1 remapped to it).
+TEST_F(Tpdo, AnEventOnADomainSignalsNoTpdo) {
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 00 18 01 81 01 00 80   # TPDO1 not valid
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 601 [8] 2F 00 1A 00 00 00 00 00   # its mapping disabled
+    tx 581 [8] 60 00 1A 00 00 00 00 00
+    rx 601 [8] 23 00 1A 01 08 00 01 10   # 0x1001:00, 8 bits
+    tx 581 [8] 60 00 1A 01 00 00 00 00
+    rx 601 [8] 2F 00 1A 00 01 00 00 00
+    tx 581 [8] 60 00 1A 00 00 00 00 00
+    rx 601 [8] 23 00 18 01 81 01 00 00   # valid again
+    tx 581 [8] 60 00 18 01 00 00 00 00
+    rx 000 [2] 01 01
+    silence
+  )");
+  withNode([](Node& node) { node.markChanged(0x2008, 0); });
+  EXPECT_TRANSCRIPT("silence");
+  withNode([](Node& node) { node.markChanged(0x1001, 0); });
+  EXPECT_TRANSCRIPT("tx 181 [1] 00");
+}
+
 TEST_F(Tpdo, NoTransmissionOutsideOperational) {
   withNode([](Node& node) { node.markChanged(0x2001, 0); });
   EXPECT_TRANSCRIPT(R"(

@@ -33,11 +33,15 @@ const DefaultValue* firstDefaultFrom(const Definition& definition, size_t offset
 void writeDefault(const Definition& definition, const SubEntry& row, const DefaultValue& value,
                   uint8_t* target) noexcept {
   const size_t bytes = storageBytes(row);
+  if (isNumeric(row.type) && bytes <= 4U) {
+    storeNative(target, value.value(), bytes);  // the number itself
+    return;
+  }
   const uint8_t* stored = definition.defaultBytes + value.value();
-  if (!isNumeric(row.type) || (bytes > 4U && kLittleEndianHost)) {
+  if (!isNumeric(row.type) || kLittleEndianHost) {
     copyBytes(target, stored, bytes);  // a longer number's little-endian bytes are its own here
   } else {
-    storeNative(target, bytes <= 4U ? value.value() : loadLittleEndianBytes(stored, bytes), bytes);
+    storeNative(target, loadLittleEndianBytes(stored, bytes), bytes);
   }
 }
 

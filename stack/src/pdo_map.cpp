@@ -121,6 +121,10 @@ od::EntryRef PdoMap::locate(const ObjectAccess& access, size_t slot) const noexc
 
 bool PdoMap::contains(const od::EntryRef& ref) const noexcept {
   // A TPDO's map (the only one asked): no dummy entries; inRom() tells the two value blocks apart.
+  // A DOMAIN is never mapped (it has no size), and its offset is no value's.
+  if (ref.type() == od::DataType::kDomain) {
+    return false;
+  }
   for (size_t i = 0; i < count_; ++i) {
     const Slot& slot = slots_[i];
     const bool same = needsAccess(i) ? slot.where == ref.index() && slot.subIndex == ref.subIndex()

@@ -52,9 +52,10 @@ AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noe
 /// A non-zero default of the RAM block: the value at `offset`, as many bytes as the row holding
 /// it stores there (a VISIBLE_STRING's with its terminating zero). A number of up to 4 bytes is
 /// value() itself, in the CPU's byte order; anything longer (strings, octet strings, 64-bit
-/// numbers) is the little-endian bytes at Definition::defaultBytes + value(). Every byte no
-/// DefaultValue covers defaults to zero. A `$NODEID` default is held without the node-id. Six
-/// bytes: the value is held as two halves.
+/// numbers) is the little-endian bytes at Definition::defaultBytes + value(). Every value no
+/// DefaultValue covers defaults to zero (restoring zeroes a row's values, not the padding
+/// between them). A `$NODEID` default is held without the node-id. Six bytes: the value is held
+/// as two halves.
 struct DefaultValue {
   uint16_t offset;
   uint16_t low;   ///< value() & 0xFFFF
