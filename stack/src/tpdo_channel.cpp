@@ -159,21 +159,16 @@ void TpdoChannel::restartTimers(PdoContext& context, Microseconds now) noexcept 
   }
 }
 
-void TpdoChannel::sendCurrent(PdoContext& context, Microseconds now, Microseconds expiry) noexcept {
-  CanFrame frame;
-  frame.id = canId_;
-  frame.dlc = static_cast<uint8_t>(map_.bytes());
-  map_.pack(context.access, frame.data);
-  context.tx.send(frame, expiry);
-  restartTimers(context, now);
-}
-
-void TpdoChannel::send(PdoContext& context, const uint8_t* data, Microseconds now,
+void TpdoChannel::send(PdoContext& context, const uint8_t* sample, Microseconds now,
                        Microseconds expiry) noexcept {
   CanFrame frame;
   frame.id = canId_;
   frame.dlc = static_cast<uint8_t>(map_.bytes());
-  copyBytes(frame.data, data, frame.dlc);
+  if (sample != nullptr) {
+    copyBytes(frame.data, sample, frame.dlc);
+  } else {
+    map_.pack(context.access, frame.data);
+  }
   context.tx.send(frame, expiry);
   restartTimers(context, now);
 }

@@ -86,9 +86,13 @@ class TpdoChannel {
     map_.pack(context.access, frame.data);
     context.tx.send(frame, expiry);
   }
-  void send(PdoContext& context, const uint8_t* data, Microseconds now,
+  /// Sends `sample` (the values sampled at a SYNC, type 252), or with nullptr the current
+  /// values, and restarts the inhibit time and the event timer.
+  void send(PdoContext& context, const uint8_t* sample, Microseconds now,
             Microseconds expiry) noexcept;
-  void sendCurrent(PdoContext& context, Microseconds now, Microseconds expiry) noexcept;
+  void sendCurrent(PdoContext& context, Microseconds now, Microseconds expiry) noexcept {
+    send(context, nullptr, now, expiry);
+  }
   void restartTimers(PdoContext& context, Microseconds now) noexcept;
   /// Keeps syncPeriod_ true to the state it summarises.
   void updateSyncPeriod() noexcept {
