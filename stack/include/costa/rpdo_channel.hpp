@@ -27,7 +27,11 @@ class RpdoChannel {
   static constexpr uint16_t kEmcyLengthLong = 0x8220;   ///< PDO longer than its mapping
   static constexpr uint16_t kEmcyTimeout = 0x8250;      ///< RPDO deadline (event timer) missed
 
-  void bind(uint16_t communicationIndex) noexcept { index_ = communicationIndex; }
+  /// Gives the channel its communication object, before anything else is asked of it.
+  void bind(uint16_t communicationIndex) noexcept {
+    index_ = communicationIndex;
+    deadline_ = kNever;
+  }
   /// The TPDO (its channel in PdoContext::tpdos) that answers each PDO this channel accepts
   /// (PdoProfile::tpdoAnswersRpdo). Set once, before configure().
   void answerWith(size_t tpdoChannel) noexcept { answer_ = static_cast<uint8_t>(tpdoChannel + 1U); }
@@ -137,7 +141,8 @@ class RpdoChannel {
   uint8_t answer_ = 0;
   /// The answer of the PDO being taken raised its TPDO's event (none was pending already).
   bool answerSignalled_ = false;
-  Microseconds deadline_ = kNever;
+  Microseconds deadline_ =
+      0;  ///< kNever from bind() on (an array of channels is all zeros at first)
   PdoMap map_;
   uint8_t held_[PdoMap::kMaxBytes] = {};
 };

@@ -17,7 +17,12 @@ namespace costa {
 
 class TpdoChannel {
  public:
-  void bind(uint16_t communicationIndex) noexcept { index_ = communicationIndex; }
+  /// Gives the channel its communication object, before anything else is asked of it.
+  void bind(uint16_t communicationIndex) noexcept {
+    index_ = communicationIndex;
+    inhibitUntil_ = kNever;
+    eventDeadline_ = kNever;
+  }
   uint16_t communicationIndex() const noexcept { return index_; }
 
   /// Reads the communication parameters and resolves the mapping. False when the mapping could
@@ -113,8 +118,9 @@ class TpdoChannel {
   bool waitingForStart_ = false;
   bool event_ = false;
   bool sampledValid_ = false;
-  Microseconds inhibitUntil_ = kNever;  ///< end of the inhibit time of the last PDO sent
-  Microseconds eventDeadline_ = kNever;
+  // Both kNever from bind() on (set there, so that an array of channels is all zeros at first).
+  Microseconds inhibitUntil_ = 0;  ///< end of the inhibit time of the last PDO sent
+  Microseconds eventDeadline_ = 0;
   PdoMap map_;
   uint8_t sampled_[PdoMap::kMaxBytes] = {};
 };
