@@ -167,36 +167,42 @@ AbortCode PdoMap::check(ObjectAccess& access, const uint8_t* data) const noexcep
 
 AbortCode PdoMap::writeThroughAccess(ObjectAccess& access, const uint8_t* data) const noexcept {
   auto* values = static_cast<uint8_t*>(access.dictionary().values());
-  // What each written entry held before: at most kMaxBytes bytes in all.
-  uint8_t before[kMaxBytes] = {};
-  uint8_t* saved[kMaxEntries] = {};
+  // Where each entry was written (nullptr: not in RAM, or a dummy entry) and what it held before,
+  // at most kMaxBytes bytes in all; with no entry that can refuse (no bit in accessMask_),
+  // nothing is saved, as nothing is put back.
+  const bool refusable = accessMask_ != 0U;
+  uint8_t before[kMaxBytes];
+  uint8_t* saved[kMaxEntries];
   size_t offset = 0;
-  for (size_t i = 0; i < count_; ++i) {
+  for (size_t i = 0; i < count_; offset += slots_[i].length, ++i) {
     const Slot& slot = slots_[i];
-    if (!skipped(i)) {
-      AbortCode written = AbortCode::kNone;
-      if (needsAccess(i)) {
-        const od::EntryRef ref = locate(access, i);
-        saved[i] = access.dictionary().ramAddress(ref);
-        if (saved[i] != nullptr) {
-          copyValue(before + offset, saved[i], slot.length);
-        }
-        written = access.write(ref, data + offset, slot.length);
-      } else {
-        saved[i] = values + slot.where;
-        copyValue(before + offset, saved[i], slot.length);
-        copyValue(saved[i], data + offset, slot.length);
-      }
-      if (written != AbortCode::kNone) {
-        for (size_t j = 0, back = 0; j < i; back += slots_[j].length, ++j) {
-          if (saved[j] != nullptr) {
-            copyValue(saved[j], before + back, slots_[j].length);
-          }
-        }
-        return written;
-      }
+    saved[i] = nullptr;
+    if (skipped(i)) {
+      continue;
     }
-    offset += slot.length;
+    AbortCode written = AbortCode::kNone;
+    if (needsAccess(i)) {
+      const od::EntryRef ref = locate(access, i);
+      saved[i] = access.dictionary().ramAddress(ref);
+      if (saved[i] != nullptr) {
+        copyValue(before + offset, saved[i], slot.length);
+      }
+      written = access.write(ref, data + offset, slot.length);
+    } else {
+      saved[i] = values + slot.where;
+      if (refusable) {
+        copyValue(before + offset, saved[i], slot.length);
+      }
+      copyValue(saved[i], data + offset, slot.length);
+    }
+    if (written != AbortCode::kNone) {
+      for (size_t j = 0, back = 0; j < i; back += slots_[j].length, ++j) {
+        if (saved[j] != nullptr) {
+          copyValue(saved[j], before + back, slots_[j].length);
+        }
+      }
+      return written;
+    }
   }
   return AbortCode::kNone;
 }

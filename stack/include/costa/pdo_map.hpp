@@ -81,9 +81,10 @@ class PdoMap {
   AbortCode check(ObjectAccess& access, const uint8_t* data) const noexcept;
   /// Second phase: writes every entry. When an entry's hook refuses (a hook that checks only in
   /// write()), the entries already written get their previous bytes back and the refusal is
-  /// returned: an RPDO is written whole or not at all. With plain(), a copy per entry.
+  /// returned: an RPDO is written whole or not at all. With plain(), a copy per entry (built for
+  /// size, in the one general loop, which then saves nothing).
   AbortCode write(ObjectAccess& access, const uint8_t* data) const noexcept {
-    if (!plain()) {
+    if (!kExpandFastPaths || !plain()) {
       return writeThroughAccess(access, data);
     }
     auto* values = static_cast<uint8_t*>(access.dictionary().values());
