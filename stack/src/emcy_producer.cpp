@@ -110,7 +110,7 @@ void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
   for (uint8_t sub = count; sub > 1U; --sub) {
     dictionary_.storeUnsigned(
         kErrorHistoryIndex, sub,
-        dictionary_.readUnsigned(kErrorHistoryIndex, static_cast<uint8_t>(sub - 1U), 0));
+        dictionary_.readUnsigned32(kErrorHistoryIndex, static_cast<uint8_t>(sub - 1U), 0));
   }
   uint32_t info = 0;
   if (manufacturer != nullptr) {

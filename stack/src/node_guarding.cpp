@@ -15,8 +15,8 @@ void NodeGuarding::reset(uint8_t nodeId, uint8_t toggleStart) noexcept {
 
 uint64_t NodeGuarding::lifeTime() const noexcept {
   // Up to 65,535 ms x 255: more than LongTimer's steps, as CiA 301 allows.
-  return uint64_t{1000} * dictionary_.readUnsigned(kGuardTimeIndex, 0, 0) *
-         dictionary_.readUnsigned(kLifeTimeFactorIndex, 0, 0);
+  return uint64_t{1000} * dictionary_.readUnsigned32(kGuardTimeIndex, 0, 0) *
+         dictionary_.readUnsigned32(kLifeTimeFactorIndex, 0, 0);
 }
 
 void NodeGuarding::restartLife(Microseconds now) noexcept {

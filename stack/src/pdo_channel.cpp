@@ -27,7 +27,7 @@ size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdo
                          uint16_t communicationIndex, uint32_t* values) noexcept {
   const auto mappingIndex = static_cast<uint16_t>(communicationIndex + 0x200U);
   if (dictionary.findObject(mappingIndex) != nullptr) {
-    auto count = static_cast<size_t>(dictionary.readUnsigned(mappingIndex, 0, 0));
+    auto count = static_cast<size_t>(dictionary.readUnsigned32(mappingIndex, 0, 0));
     if (count > PdoMap::kMaxEntries) {
       count = PdoMap::kMaxEntries;
     }

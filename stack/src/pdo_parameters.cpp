@@ -71,7 +71,7 @@ AbortCode PdoEngine::checkMappingWrite(bool receive, bool pdoValid, const od::En
   const uint16_t index = ref.index();
   const PdoDirection direction = receive ? PdoDirection::kReceive : PdoDirection::kTransmit;
   if (ref.subIndex() != 0U) {
-    if (dictionary.readUnsigned(index, 0, 0) != 0U) {
+    if (dictionary.readUnsigned32(index, 0, 0) != 0U) {
       return AbortCode::kCannotStoreState;  // disable the mapping (sub-index 0 = 0) first
     }
     return length == 4U ? PdoMap::checkEntry(dictionary, loadU32(data), direction)

@@ -58,7 +58,7 @@ bool srdoObject(uint16_t index) noexcept {
 }  // namespace
 
 bool SafetyService::gfcValid() const noexcept {
-  return s_.access.dictionary().readUnsigned(kGfcIndex, 0, 0) == 1U;
+  return s_.access.dictionary().readUnsigned32(kGfcIndex, 0, 0) == 1U;
 }
 
 bool SafetyService::operational() const noexcept {
@@ -76,7 +76,7 @@ void SafetyService::addRoutes(FrameRouter& router) const noexcept {
   const od::ObjectDictionary& dictionary = s_.access.dictionary();
   for (uint8_t slot = 0; slot < s_.channelCount; ++slot) {
     const auto index = static_cast<uint16_t>(srdo::kFirstCommunication + slot);
-    if (dictionary.readUnsigned(index, 1, 0) != srdo::kReceive) {
+    if (dictionary.readUnsigned32(index, 1, 0) != srdo::kReceive) {
       continue;
     }
     const auto normal = dictionary.readUnsigned32(index, 5, 0);

@@ -49,10 +49,8 @@ void SdoServers::addRoutes(const od::ObjectDictionary& dictionary, FrameRouter& 
       continue;
     }
     SdoServerSlot& slot = slots_[server];
-    const auto request =
-        static_cast<uint32_t>(dictionary.readUnsigned(index, kRequestSub, kNotValid));
-    const auto response =
-        static_cast<uint32_t>(dictionary.readUnsigned(index, kResponseSub, kNotValid));
+    const uint32_t request = dictionary.readUnsigned32(index, kRequestSub, kNotValid);
+    const uint32_t response = dictionary.readUnsigned32(index, kResponseSub, kNotValid);
     if (request != slot.request || response != slot.response) {
       at(server).reset();  // a new channel: what ran on the old one ends
       at(server).setResponseCanId(static_cast<uint16_t>(response & kCanIdMask));

@@ -151,8 +151,8 @@ AbortCode checkSrdoWrite(const od::ObjectDictionary& dictionary, const od::Entry
     return AbortCode::kUnsupportedAccess;  // CiA 304: the SRDO is not valid while mapped
   }
   if (sub != 0U) {
-    return dictionary.readUnsigned(index, 0, 0) == 0U ? AbortCode::kNone
-                                                      : AbortCode::kCannotStoreState;
+    return dictionary.readUnsigned32(index, 0, 0) == 0U ? AbortCode::kNone
+                                                        : AbortCode::kCannotStoreState;
   }
   uint8_t bytes = 0;
   // The direction the SRDO will have is not known yet: an entry must be mappable either way.
