@@ -59,16 +59,13 @@ AbortCode SdoValueWriter::append(const uint8_t* data, size_t length) noexcept {
   if (indicated_ != kSizeNotIndicated && received_ + length > indicated_) {
     return AbortCode::kLengthMismatch;
   }
-  if (!streamed_) {
-    if (received_ + length > bufferSize_) {
-      return AbortCode::kLengthTooHigh;
-    }
-    copyBytes(buffer_ + received_, data, length);
-    received_ += length;
-    return AbortCode::kNone;
-  }
+  // A buffered value must fit the buffer; a streamed one goes to its hook a bufferful at a time.
+  // (After a refusal the transfer ends: what was copied of the refused bytes is never used.)
   while (length > 0U) {
     if (received_ - flushed_ == bufferSize_) {
+      if (!streamed_) {
+        return AbortCode::kLengthTooHigh;
+      }
       const AbortCode flushed = flush(false);
       if (flushed != AbortCode::kNone) {
         return flushed;
