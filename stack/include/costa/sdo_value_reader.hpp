@@ -30,7 +30,7 @@ class SdoValueReader {
       return beginStreamed(size);
     }
     size_ = access_.dictionary().readWhole(ref, buffer_);
-    padded_ = size_ + kZeroTail <= bufferSize_;
+    padded_ = kExpandFastPaths && size_ + kZeroTail <= bufferSize_;  // (for the fast segments)
     if (padded_) {
       fillBytes(buffer_ + size_, 0, kZeroTail);
     }
@@ -52,7 +52,8 @@ class SdoValueReader {
   }
 
   /// Zeros that follow a snapshot when the buffer has room for them: whoever sends it in
-  /// segments of up to 7 bytes may copy 7 bytes for each, the last one too.
+  /// segments of up to 7 bytes may copy 7 bytes for each, the last one too. (Built for size,
+  /// none: every segment is read by its length.)
   static constexpr size_t kZeroTail = 7;
   /// The value is not streamed and kZeroTail zeros follow its snapshot.
   bool padded() const noexcept { return padded_; }
