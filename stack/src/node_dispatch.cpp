@@ -148,10 +148,20 @@ void Node::routeFrame(const CanFrame& frame, Microseconds now) noexcept {
     }
     return;
   }
-  // The route expanded here where speed counts; in a build for size, the one out-of-line copy.
-  bool used = kExpandFastPaths ? route(*entry, frame) : routeOne(*entry, frame);
-  if (router_.shared()) {
-    used = routeFurther(entry, frame) || used;
+  bool used = false;
+  if (kExpandFastPaths) {
+    // The route expanded here where speed counts; the routes that share its CAN-ID after it.
+    used = route(*entry, frame);
+    if (router_.shared()) {
+      used = routeFurther(entry, frame) || used;
+    }
+  } else {
+    // Built for size, one loop over the frame's routes, each through the one out-of-line copy
+    // (a reset may rebuild the table under our feet: then the frame has been handled).
+    do {
+      used = routeOne(*entry, frame) || used;
+    } while (router_.shared() && !router_.stale() &&
+             (entry = router_.nextOfSameId(entry)) != nullptr);
   }
   if (!used) {
     ++framesIgnored_;
