@@ -29,14 +29,12 @@ bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
 
 void RpdoChannel::updateQuietDlc() noexcept {
   if constexpr (kExpandFastPaths) {  // (built for size, onFrame() does not look at it)
-    quietDlc_ = tooShort_ || tooLong_ || answer_ != 0U ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+    quietDlc_ = tooShort_ || tooLong_ || answered() ? 0xFFU : static_cast<uint8_t>(map_.bytes());
   }
 }
 
-void RpdoChannel::withdrawAnswer(PdoContext& context) const noexcept {
-  if (answer_ != 0U && answerSignalled_) {
-    context.tpdos[answer_ - 1U].withdrawEvent();
-  }
+void RpdoChannel::takeBackAnswer(PdoContext& context) const noexcept {
+  context.tpdos[answer_ - 1U].withdrawEvent();
 }
 
 void RpdoChannel::stop() noexcept {
@@ -79,7 +77,7 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
     context.emcy.clear(kEmcyLengthLong, source());
   }
   updateQuietDlc();
-  if (answer_ != 0U) {
+  if (answered()) {
     // Taken: answered (withdrawn if an entry refuses).
     answerSignalled_ = context.tpdos[answer_ - 1U].signalEvent(context.clock);
   }

@@ -35,6 +35,8 @@ class RpdoChannel {
   /// The TPDO (its channel in PdoContext::tpdos) that answers each PDO this channel accepts
   /// (PdoProfile::tpdoAnswersRpdo). Set once, before configure().
   void answerWith(size_t tpdoChannel) noexcept { answer_ = static_cast<uint8_t>(tpdoChannel + 1U); }
+  /// A TPDO answers it (only a quirk profile has them: without, the tests fold away).
+  bool answered() const noexcept { return features::kQuirkProfiles && answer_ != 0U; }
   uint16_t communicationIndex() const noexcept { return index_; }
 
   /// Reads the communication parameters and resolves the mapping; drops held data and clears
@@ -80,7 +82,11 @@ class RpdoChannel {
   /// An answer signalled for a PDO that an entry then refused is taken back (the refusal is
   /// rare and cold; the answer is signalled before the entries are written, see checkLength()),
   /// unless the TPDO's event was pending already (the application's, or its event timer's).
-  void withdrawAnswer(PdoContext& context) const noexcept;
+  void withdrawAnswer(PdoContext& context) const noexcept {
+    if (answered() && answerSignalled_) {
+      takeBackAnswer(context);
+    }
+  }
   /// Applies the data held since the previous SYNC. False when an entry was refused.
   bool onSync(PdoContext& context) noexcept;
   bool holding() const noexcept { return holding_; }
@@ -114,6 +120,7 @@ class RpdoChannel {
     const uint16_t index = index_;
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoReceived(index); });
   }
+  void takeBackAnswer(PdoContext& context) const noexcept;
   void restartDeadline(PdoContext& context, Microseconds now) noexcept;
   /// Clears the EMCY conditions this PDO raised (reconfigured: they no longer apply).
   void clearConditions(PdoContext& context) noexcept;
