@@ -6,26 +6,22 @@
 namespace costa {
 namespace {
 
-// Sub-index 1, the COB-ID.
+// Sub-index 1, the COB-ID: the rules every 11-bit COB-ID shares (cob::acceptableCobId(): no
+// 29-bit CAN-ID, no bits 11..28, a CAN-ID in use not restricted, a valid PDO made not valid
+// before its CAN-ID changes), or, where the device gives its PDOs a range of CAN-IDs, that range
+// instead of the restricted ones.
 AbortCode checkCobIdWrite(const PdoProfile& profile, bool receive, bool currentlyValid,
                           uint32_t currentCanId, const uint8_t* data, size_t length) noexcept {
   if (length != 4U) {
     return AbortCode::kNone;  // the dictionary reports the length error
   }
-  const PdoCobId cob = decodePdoCobId(loadU32(data), profile.cobIdPolarity);
-  if (cob.extended || cob.reservedBits) {
-    return AbortCode::kInvalidValue;  // 29-bit CAN-IDs are not supported
-  }
-  if (currentlyValid && cob.valid && cob.canId != currentCanId) {
-    return AbortCode::kInvalidValue;  // invalidate before changing the CAN-ID
-  }
-  if (cob.valid) {
-    const CanIdRange& range = receive ? profile.rpdoCanIds : profile.tpdoCanIds;
-    if (range.restricts() ? !range.contains(cob.canId) : cob::isRestrictedCanId(cob.canId)) {
-      return AbortCode::kInvalidValue;
-    }
-  }
-  return AbortCode::kNone;
+  const uint32_t value = loadU32(data);
+  const PdoCobId cob = decodePdoCobId(value, profile.cobIdPolarity);
+  const CanIdRange& range = receive ? profile.rpdoCanIds : profile.tpdoCanIds;
+  const bool acceptable = cob::acceptableCobId(value, cob.valid && !range.restricts(),
+                                               currentlyValid && cob.valid, currentCanId) &&
+                          !(cob.valid && range.restricts() && !range.contains(cob.canId));
+  return acceptable ? AbortCode::kNone : AbortCode::kInvalidValue;
 }
 
 /// The highest SYNC start value (TPDO communication parameter sub-index 6, CiA 301).
