@@ -135,6 +135,51 @@ TEST_F(NodeContract, TheSameValueBySdoIsAbortedWithTheHooksCode) {
   EXPECT_EQ(value(0x2005, 2), 0x1234U);
 }
 
+/// Writes every value, then refuses 0x2005:02 = 0xBAD: a hook that finds out too late (after it
+/// changed the value), which its check() could not see coming.
+class LateRefusal : public ObjectHook {
+ public:
+  AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
+                  size_t length) noexcept override {
+    const AbortCode written = dictionary.write(ref, data, length);
+    if (ref.subIndex() == 2U && length == 2U && loadU16(data) == 0x0BADU) {
+      return AbortCode::kCannotStoreState;
+    }
+    return written;
+  }
+};
+
+TEST_F(NodeContract, ARefusalAtWriteRestoresEveryEntryAnEntryMappedTwiceAndTheRefusingOneToo) {
+  LateRefusal hook;
+  ASSERT_TRUE(bus_.node().attachHook(0x2005, 0x2005, hook));
+  // RPDO2 remapped: 0x2005:01 twice, then 0x2005:02.
+  EXPECT_TRANSCRIPT(R"(
+    rx 601 [8] 23 01 14 01 01 03 00 80
+    tx 581 [8] 60 01 14 01 00 00 00 00
+    rx 601 [8] 2F 01 16 00 00 00 00 00
+    tx 581 [8] 60 01 16 00 00 00 00 00
+    rx 601 [8] 23 01 16 01 10 01 05 20
+    tx 581 [8] 60 01 16 01 00 00 00 00
+    rx 601 [8] 23 01 16 02 10 01 05 20
+    tx 581 [8] 60 01 16 02 00 00 00 00
+    rx 601 [8] 23 01 16 03 10 02 05 20
+    tx 581 [8] 60 01 16 03 00 00 00 00
+    rx 601 [8] 2F 01 16 00 03 00 00 00
+    tx 581 [8] 60 01 16 00 00 00 00 00
+    rx 601 [8] 23 01 14 01 01 03 00 00
+    tx 581 [8] 60 01 14 01 00 00 00 00
+    rx 000 [2] 01 01
+    rx 301 [6] 11 11 22 22 AD 0B   # 0x2005:01 = 0x1111, then 0x2222; 0x2005:02 refused late
+    silence
+  )");
+  EXPECT_EQ(value(0x2005, 1), 0x1234U);  // its own value, not the first entry's 0x1111
+  EXPECT_EQ(value(0x2005, 2), 0x1234U);  // the hook had written 0x0BAD before it refused
+  EXPECT_EQ(bus_.node().statistics().rpdosRefused, 1U);
+  EXPECT_TRANSCRIPT("rx 301 [6] 11 11 22 22 33 00");  // accepted: the later entry wins
+  EXPECT_EQ(value(0x2005, 1), 0x2222U);
+  EXPECT_EQ(value(0x2005, 2), 0x33U);
+}
+
 class Silent : public ObjectHook {};
 class Quiet : public NodeEvents {};
 

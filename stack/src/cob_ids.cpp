@@ -1,4 +1,4 @@
-// The COB-ID write rules that SYNC, TIME, EMCY and the EMCY consumer share (CiA 301).
+// The COB-ID write rules that SYNC, TIME, EMCY, the EMCY consumer and the PDOs share (CiA 301).
 #include "costa/cob_ids.hpp"
 
 namespace costa::cob {

@@ -196,7 +196,10 @@ AbortCode PdoMap::writeThroughAccess(ObjectAccess& access, const uint8_t* data) 
       copyValue(saved[i], data + offset, slot.length);
     }
     if (written != AbortCode::kNone) {
-      for (size_t j = 0, back = 0; j < i; back += slots_[j].length, ++j) {
+      // Everything goes back, the refusing entry too (its hook may have changed it first), the
+      // last written first: an entry mapped twice gets the bytes it held before the PDO.
+      for (size_t j = i + 1U, back = offset + slot.length; j-- > 0U;) {
+        back -= slots_[j].length;
         if (saved[j] != nullptr) {
           copyValue(saved[j], before + back, slots_[j].length);
         }

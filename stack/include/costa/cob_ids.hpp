@@ -28,7 +28,7 @@ inline constexpr bool isRestrictedCanId(uint32_t canId) noexcept {
 }
 
 /// The rules of CiA 301 that every write of an 11-bit COB-ID shares (SYNC, TIME, EMCY, EMCY
-/// consumer): bit 29 (a 29-bit CAN-ID) and bits 11..28 clear; a CAN-ID the object uses is not
+/// consumer, PDO): bit 29 (a 29-bit CAN-ID) and bits 11..28 clear; a CAN-ID the object uses is not
 /// restricted (7.3.5); where the object says so, the CAN-ID does not change.
 /// used: the object uses the written CAN-ID (it is valid, or the object has no valid bit);
 /// kept: this write may not change the CAN-ID (each object has its own rule for when, e.g. EMCY
