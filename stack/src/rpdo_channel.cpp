@@ -29,6 +29,7 @@ bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
 
 void RpdoChannel::updateQuietDlc() noexcept {
   if constexpr (kExpandFastPaths) {  // (built for size, onFrame() does not look at it)
+    // cppcheck-suppress knownConditionTrueFalse ; false in a build without quirk profiles
     quietDlc_ = tooShort_ || tooLong_ || answered() ? 0xFFU : static_cast<uint8_t>(map_.bytes());
   }
 }
@@ -77,6 +78,7 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
     context.emcy.clear(kEmcyLengthLong, source());
   }
   updateQuietDlc();
+  // cppcheck-suppress knownConditionTrueFalse ; false in a build without quirk profiles
   if (answered()) {
     // Taken: answered (withdrawn if an entry refuses).
     answerSignalled_ = context.tpdos[answer_ - 1U].signalEvent(context.clock);

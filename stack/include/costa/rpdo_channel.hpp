@@ -83,6 +83,7 @@ class RpdoChannel {
   /// rare and cold; the answer is signalled before the entries are written, see checkLength()),
   /// unless the TPDO's event was pending already (the application's, or its event timer's).
   void withdrawAnswer(PdoContext& context) const noexcept {
+    // cppcheck-suppress knownConditionTrueFalse ; false in a build without quirk profiles
     if (answered() && answerSignalled_) {
       takeBackAnswer(context);
     }
