@@ -157,7 +157,8 @@ void Node::routeFrame(const CanFrame& frame, Microseconds now) noexcept {
     }
   } else {
     // Built for size, one loop over the frame's routes, each through the one out-of-line copy
-    // (a reset may rebuild the table under our feet: then the frame has been handled).
+    // (a reset may rebuild the table under our feet: then the frame has been handled; shared()
+    // first, so that the usual table of one route per CAN-ID makes no call).
     do {
       used = routeOne(*entry, frame) || used;
     } while (router_.shared() && !router_.stale() &&

@@ -82,8 +82,8 @@ class PdoMap {
   /// Second phase: writes every entry. When an entry's hook refuses (a hook that checks only in
   /// write()), the entries written so far, the refusing one included, get back the bytes they
   /// held before the PDO (an entry mapped twice too) and the refusal is returned: an RPDO is
-  /// written whole or not at all. With plain(), a copy per entry (built for
-  /// size, in the one general loop, which then saves nothing).
+  /// written whole or not at all. With plain(), a copy per entry (built for size, in the one
+  /// general loop, which then saves nothing).
   AbortCode write(ObjectAccess& access, const uint8_t* data) const noexcept {
     if (!kExpandFastPaths || !plain()) {
       return writeThroughAccess(access, data);

@@ -149,8 +149,8 @@ class RpdoChannel {
   uint8_t answer_ = 0;
   /// The answer of the PDO being taken raised its TPDO's event (none was pending already).
   bool answerSignalled_ = false;
-  Microseconds deadline_ =
-      0;  ///< kNever from bind() on (an array of channels is all zeros at first)
+  /// kNever from bind() on (set there, so that an array of channels is all zeros at first).
+  Microseconds deadline_ = 0;
   PdoMap map_;
   uint8_t held_[PdoMap::kMaxBytes] = {};
 };
