@@ -30,7 +30,7 @@ bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
 void RpdoChannel::updateQuietDlc() noexcept {
   if constexpr (kExpandFastPaths) {  // (built for size, onFrame() does not look at it)
     // cppcheck-suppress knownConditionTrueFalse ; false in a build without quirk profiles
-    quietDlc_ = tooShort_ || tooLong_ || answered() ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+    quietDlc_ = raised_ != 0U || answered() ? 0xFFU : static_cast<uint8_t>(map_.bytes());
   }
 }
 
@@ -44,39 +44,33 @@ void RpdoChannel::stop() noexcept {
 }
 
 void RpdoChannel::clearConditions(PdoContext& context) noexcept {
-  if (timedOut_) {
-    context.emcy.clear(kEmcyTimeout, source());
+  setCondition(context, kTimedOut, false);
+  setCondition(context, kTooShort, false);
+  setCondition(context, kTooLong, false);
+}
+
+void RpdoChannel::setCondition(PdoContext& context, Condition condition, bool on) noexcept {
+  // By condition bit: 1, 2, 4 -> 0, 1, 2.
+  constexpr uint16_t kCodes[] = {kEmcyLengthShort, kEmcyLengthLong, kEmcyTimeout};
+  const uint16_t code = kCodes[condition >> 1U];
+  if (on) {
+    raised_ |= condition;
+    context.emcy.raise(code, source(), kErrorCommunication);
+  } else if (raised(condition)) {
+    raised_ &= static_cast<uint8_t>(~condition);
+    context.emcy.clear(code, source());
   }
-  if (tooShort_) {
-    context.emcy.clear(kEmcyLengthShort, source());
-  }
-  if (tooLong_) {
-    context.emcy.clear(kEmcyLengthLong, source());
-  }
-  timedOut_ = false;
-  tooShort_ = false;
-  tooLong_ = false;
 }
 
 bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
   const size_t bytes = map_.bytes();
   if (dlc < bytes) {
-    tooShort_ = true;
+    setCondition(context, kTooShort, true);
     updateQuietDlc();
-    context.emcy.raise(kEmcyLengthShort, source(), kErrorCommunication);
     return false;
   }
-  if (tooShort_) {
-    tooShort_ = false;
-    context.emcy.clear(kEmcyLengthShort, source());
-  }
-  if (dlc > bytes) {
-    tooLong_ = true;
-    context.emcy.raise(kEmcyLengthLong, source(), kErrorCommunication);
-  } else if (tooLong_) {
-    tooLong_ = false;
-    context.emcy.clear(kEmcyLengthLong, source());
-  }
+  setCondition(context, kTooShort, false);
+  setCondition(context, kTooLong, dlc > bytes);
   updateQuietDlc();
   // cppcheck-suppress knownConditionTrueFalse ; false in a build without quirk profiles
   if (answered()) {
@@ -89,10 +83,7 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
 void RpdoChannel::restartDeadline(PdoContext& context, Microseconds now) noexcept {
   deadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
   context.clock.schedule(deadline_);
-  if (timedOut_) {
-    timedOut_ = false;
-    context.emcy.clear(kEmcyTimeout, source());
-  }
+  setCondition(context, kTimedOut, false);
 }
 
 bool RpdoChannel::onSync(PdoContext& context) noexcept {
@@ -117,10 +108,9 @@ bool RpdoChannel::applyChecked(PdoContext& context, const uint8_t* data) noexcep
 }
 
 void RpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
-  if (!timedOut_ && reached(now, deadline_)) {
-    timedOut_ = true;
+  if (!raised(kTimedOut) && reached(now, deadline_)) {
     deadline_ = kNever;
-    context.emcy.raise(kEmcyTimeout, source(), kErrorCommunication);
+    setCondition(context, kTimedOut, true);
     const uint16_t index = index_;
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoTimeout(index); });
   }

@@ -94,7 +94,7 @@ class RpdoChannel {
   /// Deadline monitoring with the event timer (sub-index 5): EMCY 0x8250 when no PDO arrived
   /// within it after the first one.
   void process(PdoContext& context, Microseconds now) noexcept;
-  Microseconds nextDeadline() const noexcept { return timedOut_ ? kNever : deadline_; }
+  Microseconds nextDeadline() const noexcept { return raised(kTimedOut) ? kNever : deadline_; }
   /// Leaving operational: held data and monitoring stop. A missed deadline stays an error
   /// (EMCY 0x8250) until a PDO arrives or the PDO is configured again.
   void stop() noexcept;
@@ -125,6 +125,11 @@ class RpdoChannel {
   void restartDeadline(PdoContext& context, Microseconds now) noexcept;
   /// Clears the EMCY conditions this PDO raised (reconfigured: they no longer apply).
   void clearConditions(PdoContext& context) noexcept;
+  /// The EMCY conditions a PDO raises, one bit each of raised_.
+  enum Condition : uint8_t { kTooShort = 1, kTooLong = 2, kTimedOut = 4 };
+  /// Raises the condition's EMCY (`on`), or clears it when this PDO raised it.
+  void setCondition(PdoContext& context, Condition condition, bool on) noexcept;
+  bool raised(Condition condition) const noexcept { return (raised_ & condition) != 0U; }
   void updateQuietDlc() noexcept;
   /// Raises or clears EMCY 0x8210/0x8220 for a frame of `dlc` bytes; looks nothing up while
   /// the length stays right. False for a frame too short to apply. A frame that will be taken
@@ -138,9 +143,7 @@ class RpdoChannel {
   uint8_t type_ = 0;
   bool valid_ = false;
   bool holding_ = false;
-  bool timedOut_ = false;
-  bool tooShort_ = false;  ///< EMCY 0x8210 raised
-  bool tooLong_ = false;   ///< EMCY 0x8220 raised
+  uint8_t raised_ = 0;  ///< the Condition bits whose EMCY this PDO raised
   /// The DLC for which onFrame() takes the quiet path: the mapped bytes while neither length
   /// EMCY is raised and no TPDO answers, else none (0xFF).
   uint8_t quietDlc_ = 0;
