@@ -17,7 +17,7 @@ AbortCode checkCobIdWrite(const PdoProfile& profile, bool receive, bool currentl
   }
   const uint32_t value = loadU32(data);
   const PdoCobId cob = decodePdoCobId(value, profile.cobIdPolarity);
-  const CanIdRange& range = receive ? profile.rpdoCanIds : profile.tpdoCanIds;
+  const CanIdRange range = receive ? profile.rpdoCanIds : profile.tpdoCanIds;
   const bool acceptable = cob::acceptableCobId(value, cob.valid && !range.restricts(),
                                                currentlyValid && cob.valid, currentCanId) &&
                           !(cob.valid && range.restricts() && !range.contains(cob.canId));
