@@ -21,8 +21,8 @@ bool FrameRouter::add(uint16_t id, Route route, uint8_t channel) noexcept {
     slots_[at] = slots_[at - 1U];
     --at;
   }
-  shared_ =
-      shared_ || (at > 0U && slots_[at - 1U].id == id) || (at < count_ && slots_[at + 1U].id == id);
+  // The new route goes after every route of its CAN-ID: the one before it tells.
+  shared_ = shared_ || (at > 0U && slots_[at - 1U].id == id);
   slots_[at] = RouteEntry{id, route, channel};
   ++count_;
   // Every function code after the new route's starts one route later.

@@ -34,7 +34,7 @@ enum class Route : uint8_t {
   kTpdoRequest,  ///< a remote request for a TPDO; `channel` is its TpdoChannel
 };
 
-struct RouteEntry {
+struct alignas(4) RouteEntry {  // (4-byte aligned: copied as one word)
   uint16_t id = 0;
   Route route = Route::kNmt;
   uint8_t channel = 0;
