@@ -55,10 +55,19 @@ int64_t signExtend(uint64_t raw, size_t length) noexcept {
     return static_cast<int64_t>(raw);
   }
   // With the bits above the sign cleared, flipping the sign bit and subtracting its weight
-  // leaves a positive value as it is and takes 2^(8 length) from a negative one.
-  const uint64_t sign = uint64_t{1} << (8U * length - 1U);
-  const uint64_t value = raw & ((sign << 1U) - 1U);
-  return static_cast<int64_t>((value ^ sign) - sign);
+  // leaves a positive value as it is and takes 2^(8 length) from a negative one; done in 32 bits
+  // on the half that holds the sign (no 64-bit shift by a variable to link).
+  auto low = static_cast<uint32_t>(raw);
+  auto high = static_cast<uint32_t>(raw >> 32U);
+  if (length <= 4U) {
+    const uint32_t sign = 1U << (8U * length - 1U);
+    low = ((low & ((sign << 1U) - 1U)) ^ sign) - sign;
+    high = (low & 0x80000000U) != 0U ? 0xFFFFFFFFU : 0U;
+  } else {
+    const uint32_t sign = 1U << (8U * (length - 4U) - 1U);
+    high = ((high & ((sign << 1U) - 1U)) ^ sign) - sign;
+  }
+  return static_cast<int64_t>((static_cast<uint64_t>(high) << 32U) | low);
 }
 
 }  // namespace costa
