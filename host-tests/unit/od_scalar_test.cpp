@@ -96,3 +96,33 @@ TEST_F(ScalarTest, AnAbsentEntryIsNotValidStoresNothingAndAStringReadsAsZero) {
 
 }  // namespace
 }  // namespace costa::od
+
+namespace costa::od {
+namespace {
+
+// readUnsigned32() of (index, sub-index), which the stack's services read their objects with, is
+// the low half of readUnsigned(): for every entry of the example, values with the sign bit of
+// each size set, wide values, both node-ids of a `$NODEID` constant; a missing entry gives the
+// fallback, a string 0.
+TEST_F(ScalarTest, ReadUnsigned32IsTheLowHalfOfReadUnsignedForEveryEntry) {
+  size_t signedEntries = 0;
+  for (uint64_t value : {0x0ULL, 0x80ULL, 0xFFULL, 0x8000ULL, 0xFFFEULL, 0x80000000ULL,
+                         0xFFFFFFFFFFFFFF85ULL, 0x0123456789ABCDEFULL}) {
+    for (const EntryRef& ref : Entries(gen::example::kDefinition)) {
+      byRef_.storeUnsigned(ref, value);
+      for (const uint8_t nodeId : {uint8_t{5}, uint8_t{0x7F}}) {
+        byRef_.setNodeId(nodeId);
+        EXPECT_EQ(byRef_.readUnsigned32(ref.index(), ref.subIndex(), 0xDEADBEEFU),
+                  static_cast<uint32_t>(byRef_.readUnsigned(ref)))
+            << std::hex << ref.index() << ":" << unsigned{ref.subIndex()} << " " << value;
+      }
+      signedEntries += isSigned(ref.type()) ? 1U : 0U;
+    }
+  }
+  EXPECT_GT(signedEntries, 0U);
+  EXPECT_EQ(byRef_.readUnsigned32(0x5FFF, 0, 0xDEADBEEFU), 0xDEADBEEFU);
+  EXPECT_EQ(byRef_.readUnsigned32(0x1008, 0, 0xDEADBEEFU), 0U);
+}
+
+}  // namespace
+}  // namespace costa::od

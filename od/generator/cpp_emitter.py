@@ -366,8 +366,12 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
     lines += ["};", "#else", "constexpr const uint16_t* kObjectSlots = nullptr;", "#endif", ""]
     lines.append("static_assert(sizeof(Values) <= 0xFFFFU && sizeof(Constants) <= 0xFFFFU, "
                  "\"value offsets are 16-bit: keep each block under 64 KiB\");")
-    real_limits = any(e.has_limits and e.data_type.kind == "real"
-                      for e in device.all_entries())
+    # The limit check the dictionary links: none without limits, no floating point without a
+    # REAL entry that has them.
+    limited = [e for e in device.all_entries() if e.has_limits]
+    limit_check = ("nullptr" if not limited else
+                   "&costa::od::checkLimits" if any(e.data_type.kind == "real" for e in limited)
+                   else "&costa::od::checkIntegerLimits")
     lines += ["", "}  // namespace", "",
               "const costa::od::Definition kDefinition = {",
               f"{_INDENT * 2}kObjects,",
@@ -381,7 +385,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
               f"{_INDENT * 2}0x{layout_id(device):08X}U,",
               f"{_INDENT * 2}{text_literal(device.product_name)},",
               f"{_INDENT * 2}{'kLimits' if limit_rows else 'nullptr'},",
-              f"{_INDENT * 2}{'&costa::od::checkRealLimits' if real_limits else 'nullptr'},",
+              f"{_INDENT * 2}{limit_check},",
               f"{_INDENT * 2}kObjectSlots,",
               f"{_INDENT * 2}{32 - bits},",
               f"{_INDENT * 2}0x{device.dummy_usage:02X}U,",

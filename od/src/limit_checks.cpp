@@ -1,7 +1,9 @@
-// The limit check of REAL32/REAL64 entries, in its own unit so that only dictionaries with such
-// an entry link floating-point code (Definition::realLimits).
+// The limit checks a Definition names (Definition::limitCheck), each in its own section, so
+// that a dictionary links only the one it names: none without limits, no floating-point code
+// without a REAL entry that has limits.
 #include "costa/od/bytes.hpp"
 #include "costa/od/definition.hpp"
+#include "costa/od/little_endian.hpp"
 
 namespace costa::od {
 namespace {
@@ -18,8 +20,6 @@ double toDouble(DataType type, uint64_t raw) noexcept {
   return d;
 }
 
-}  // namespace
-
 AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noexcept {
   const double value = toDouble(type, raw);
   if (value != value) {  // NaN is in no range
@@ -32,6 +32,33 @@ AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noe
     return AbortCode::kValueTooLow;
   }
   return AbortCode::kNone;
+}
+
+}  // namespace
+
+AbortCode checkIntegerLimits(DataType type, const uint8_t* source, size_t size,
+                             const Limits& limits) noexcept {
+  const uint64_t raw = loadLittleEndian(source, size);
+  if (isSigned(type)) {
+    const int64_t value = signExtend(raw, size);
+    if (value > static_cast<int64_t>(limits.high)) {
+      return AbortCode::kValueTooHigh;
+    }
+    return value < static_cast<int64_t>(limits.low) ? AbortCode::kValueTooLow : AbortCode::kNone;
+  }
+  if (isReal(type)) {
+    return AbortCode::kNone;  // (only checkLimits() checks REALs)
+  }
+  if (raw > limits.high) {
+    return AbortCode::kValueTooHigh;
+  }
+  return raw < limits.low ? AbortCode::kValueTooLow : AbortCode::kNone;
+}
+
+AbortCode checkLimits(DataType type, const uint8_t* source, size_t size,
+                      const Limits& limits) noexcept {
+  return isReal(type) ? checkRealLimits(type, loadLittleEndian(source, size), limits)
+                      : checkIntegerLimits(type, source, size, limits);
 }
 
 }  // namespace costa::od

@@ -6,21 +6,6 @@
 namespace costa::od {
 namespace {
 
-// Compares a candidate integer value (raw wire bits) with the entry's limits.
-AbortCode checkIntegerLimits(const EntryRef& ref, const Limits& limits, uint64_t raw) noexcept {
-  if (isSigned(ref.type())) {
-    const int64_t value = signExtend(raw, ref.size());
-    if (value > static_cast<int64_t>(limits.high)) {
-      return AbortCode::kValueTooHigh;
-    }
-    return value < static_cast<int64_t>(limits.low) ? AbortCode::kValueTooLow : AbortCode::kNone;
-  }
-  if (raw > limits.high) {
-    return AbortCode::kValueTooHigh;
-  }
-  return raw < limits.low ? AbortCode::kValueTooLow : AbortCode::kNone;
-}
-
 // Copies a whole numeric value (1, 2, 4 or 8 bytes) with one load and one store.
 void copyNumber(uint8_t* to, const uint8_t* from, size_t size) noexcept {
   switch (size) {
@@ -227,16 +212,11 @@ AbortCode ObjectDictionary::check(const EntryRef& ref, const uint8_t* source,
   if (type == DataType::kBoolean) {
     return source[0] > 1U ? AbortCode::kInvalidValue : AbortCode::kNone;
   }
-  if (ref.row->limits == 0U) {
+  if (ref.row->limits == 0U || definition_->limitCheck == nullptr) {
     return AbortCode::kNone;
   }
-  const Limits& limits = definition_->limits[ref.row->limits - 1U];
-  const uint64_t raw = loadLittleEndian(source, ref.size());
-  if (isReal(type)) {
-    return definition_->realLimits != nullptr ? definition_->realLimits(type, raw, limits)
-                                              : AbortCode::kNone;
-  }
-  return checkIntegerLimits(ref, limits, raw);
+  return definition_->limitCheck(type, source, ref.size(),
+                                 definition_->limits[ref.row->limits - 1U]);
 }
 
 AbortCode ObjectDictionary::writeChecked(const EntryRef& ref, const uint8_t* source,

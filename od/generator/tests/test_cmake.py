@@ -12,15 +12,16 @@ import unittest
 from tests.helpers import EXAMPLE_EDS, GENERATOR_DIR, INCLUDE_DIR, REPO_ROOT
 
 CMAKE_MODULE = os.path.join(REPO_ROOT, "od", "cmake", "costa_object_dictionary.cmake")
-# The REAL limit check the example's definition names (od/src, part of costa_od).
-REAL_LIMITS = os.path.join(REPO_ROOT, "od", "src", "real_limits.cpp")
+# The limit check the example's definition names and what it calls (od/src, part of costa_od).
+LIMIT_CHECKS = " ".join('"' + os.path.join(REPO_ROOT, "od", "src", name) + '"'
+                        for name in ("limit_checks.cpp", "little_endian.cpp"))
 
 PROJECT = """
 cmake_minimum_required(VERSION 3.20)
 project(odgen_cmake_test CXX)
 set(CMAKE_CXX_STANDARD 17)
 include("{module}")
-add_library(costa_od STATIC "{real_limits}")
+add_library(costa_od STATIC {limit_checks})
 target_include_directories(costa_od PUBLIC "{include}")
 costa_add_object_dictionary(device_od EDS example.eds NAME example)
 add_executable(app main.cpp)
@@ -51,7 +52,7 @@ class CMakeTest(unittest.TestCase):
             self.skipTest("cmake or c++ not found")
         with tempfile.TemporaryDirectory() as source:
             with open(os.path.join(source, "CMakeLists.txt"), "w", encoding="utf-8") as stream:
-                stream.write(PROJECT.format(module=CMAKE_MODULE, include=INCLUDE_DIR, real_limits=REAL_LIMITS))
+                stream.write(PROJECT.format(module=CMAKE_MODULE, include=INCLUDE_DIR, limit_checks=LIMIT_CHECKS))
             with open(os.path.join(source, "main.cpp"), "w", encoding="utf-8") as stream:
                 stream.write(MAIN)
             shutil.copy(EXAMPLE_EDS, os.path.join(source, "example.eds"))
@@ -76,7 +77,7 @@ class CMakeTest(unittest.TestCase):
         lines[bad] = "DataType=0x0099"
         with tempfile.TemporaryDirectory() as source:
             with open(os.path.join(source, "CMakeLists.txt"), "w", encoding="utf-8") as stream:
-                stream.write(PROJECT.format(module=CMAKE_MODULE, include=INCLUDE_DIR, real_limits=REAL_LIMITS))
+                stream.write(PROJECT.format(module=CMAKE_MODULE, include=INCLUDE_DIR, limit_checks=LIMIT_CHECKS))
             with open(os.path.join(source, "main.cpp"), "w", encoding="utf-8") as stream:
                 stream.write(MAIN)
             with open(os.path.join(source, "example.eds"), "w", encoding="utf-8") as stream:

@@ -129,12 +129,12 @@ class CompileTest(unittest.TestCase):
             for compiler in available:
                 with self.subTest(compiler=os.path.basename(compiler)):
                     objects = []
-                    # The REAL limit check the example's definition names and the defaults'
+                    # The limit check the example's definition names and the defaults'
                     # reader live in od/src.
                     sources = [os.path.join(out, "example_od.cpp"),
                                os.path.join(out, "example_od_names.cpp"),
                                *(os.path.join(REPO_ROOT, "od", "src", name)
-                                 for name in ("real_limits.cpp", "object_dictionary.cpp",
+                                 for name in ("limit_checks.cpp", "object_dictionary.cpp",
                                               "dictionary_defaults.cpp", "little_endian.cpp"))]
                     for source in sources:
                         name = os.path.basename(source)

@@ -184,7 +184,7 @@ class ExampleOutputTest(unittest.TestCase):
                       "    kRows,\n    &kConstants,\n    kDefaults,\n    kDefaultBytes,\n    "
                       f"{defaults},\n    sizeof(Values),\n"
                       f"    0x{layout:08X}U,\n    \"Costa example device\",\n    kLimits,\n"
-                      "    &costa::od::checkRealLimits,\n    kObjectSlots,\n    26,\n    0x24U,\n};", self.cpp)
+                      "    &costa::od::checkLimits,\n    kObjectSlots,\n    26,\n    0x24U,\n};", self.cpp)
 
     def test_size_checks(self):
         self.assertIn('static_assert(sizeof(Values::x2003_serial_text) == 21, '
@@ -256,6 +256,20 @@ class SmallOutputTest(unittest.TestCase):
         self.assertIn("kErrorHistory = 0;", header)
         self.assertNotIn("kLimits", result.files["test_od.cpp"])
         self.assertIn("    nullptr,\n    nullptr,\n    kObjectSlots,\n    29,\n    0x00U,\n};",
+                      result.files["test_od.cpp"])
+
+    def test_integer_limits_name_the_integer_check_only(self):
+        result = run_text(eds("""
+            [2000]
+            ParameterName=Speed
+            DataType=0x0006
+            AccessType=rw
+            LowLimit=10
+            HighLimit=20
+            DefaultValue=15
+            """))
+        self.assertEqual(result.status, 0)
+        self.assertIn("    kLimits,\n    &costa::od::checkIntegerLimits,\n    kObjectSlots,",
                       result.files["test_od.cpp"])
 
     def test_literal_helpers(self):

@@ -42,12 +42,19 @@ struct Limits {
   uint64_t high;
 };
 
-/// Checks the raw bits of a REAL32/REAL64 value against its limits: kInvalidValue (NaN),
-/// kValueTooHigh, kValueTooLow or kNone. The generator names od::checkRealLimits in a
-/// Definition only when the dictionary has a REAL entry with limits, so that dictionaries
-/// without one link no floating-point code.
-using RealLimitCheck = AbortCode (*)(DataType type, uint64_t raw, const Limits& limits);
-AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noexcept;
+/// Checks a value of `type` (its `size` bytes on the wire, little-endian, at `source`) against
+/// its limits: kValueTooHigh, kValueTooLow, kInvalidValue (a REAL that is NaN) or kNone. The
+/// generator names one in a Definition only when the dictionary has an entry with limits:
+/// checkIntegerLimits when none of them is a REAL, checkLimits otherwise. So a dictionary
+/// without limits links no limit code, and one without REAL limits no floating-point code.
+using LimitCheck = AbortCode (*)(DataType type, const uint8_t* source, size_t size,
+                                 const Limits& limits);
+/// Integer limits only (a REAL passes).
+AbortCode checkIntegerLimits(DataType type, const uint8_t* source, size_t size,
+                             const Limits& limits) noexcept;
+/// Integer and REAL limits.
+AbortCode checkLimits(DataType type, const uint8_t* source, size_t size,
+                      const Limits& limits) noexcept;
 
 /// A non-zero default of the RAM block: the value at `offset`, as many bytes as the row holding
 /// it stores there (a VISIBLE_STRING's with its terminating zero). A number of up to 4 bytes is
@@ -123,11 +130,11 @@ struct Definition {
   const DefaultValue* defaults;  ///< The non-zero defaults of the RAM block, by offset.
   const uint8_t* defaultBytes;   ///< Bytes of the defaults longer than 4 bytes.
   uint16_t defaultCount;
-  uint32_t valuesSize;        ///< Size of the RAM values block in bytes.
-  uint32_t layoutId;          ///< Identifies the layout of the stored groups (for stored images).
-  const char* deviceName;     ///< Name of the device description the tables were generated from.
-  const Limits* limits;       ///< Rows named by SubEntry::limits (null when none has limits).
-  RealLimitCheck realLimits;  ///< Null unless a REAL entry has limits.
+  uint32_t valuesSize;     ///< Size of the RAM values block in bytes.
+  uint32_t layoutId;       ///< Identifies the layout of the stored groups (for stored images).
+  const char* deviceName;  ///< Name of the device description the tables were generated from.
+  const Limits* limits;    ///< Rows named by SubEntry::limits (null when none has limits).
+  LimitCheck limitCheck;   ///< Null unless an entry has limits (then none are checked).
   /// Open-addressed hash table of the objects: 2^(32 - objectSlotShift) entries, each 0 (empty) or
   /// 1 + the object's position in `objects`; see objectSlotOf(). Null: lookups search the
   /// sorted `objects` instead (a definition made by hand; every generated one built for size,
