@@ -203,10 +203,10 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
     if (ref.subIndex() != 0U || data[0] != 0U) {
       return AbortCode::kInvalidValue;
     }
-    for (unsigned sub = 1; sub < dictionary.entryCount(*ref.object); ++sub) {
+    // Every sub-index to 0, the last first: one loop ends with sub-index 0, the count.
+    for (unsigned sub = dictionary.entryCount(*ref.object); sub-- != 0U;) {
       dictionary.storeUnsigned(kErrorHistoryIndex, static_cast<uint8_t>(sub), 0);
     }
-    dictionary.storeUnsigned(kErrorHistoryIndex, 0, 0);
     return AbortCode::kNone;
   }
   if (ref.index() == kCobIdIndex && length == 4U) {
