@@ -23,15 +23,19 @@ void HeartbeatProducer::process(Microseconds now, NmtState state) noexcept {
   if (!reached(now, next_)) {
     return;
   }
+  send(state);
+  next_ = at(next_, period_);
+  if (!before(now, next_)) {  // late by more than a period: keep the rhythm from now on
+    next_ = at(now, period_);
+  }
+}
+
+void HeartbeatProducer::send(NmtState state) noexcept {
   CanFrame frame;
   frame.id = cob::kErrorControlBase + nodeId_;
   frame.dlc = 1;
   frame.data[0] = static_cast<uint8_t>(state);
   tx_.send(frame);
-  next_ = at(next_, period_);
-  if (!before(now, next_)) {  // late by more than a period: keep the rhythm from now on
-    next_ = at(now, period_);
-  }
 }
 
 AbortCode HeartbeatProducer::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,

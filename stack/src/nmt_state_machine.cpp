@@ -83,11 +83,7 @@ void NmtStateMachine::resetCommunication() noexcept {
   services_.sync.configure(services_.clock.now);
   services_.time.configure();
   services_.pdos.configure();
-  CanFrame bootUp;
-  bootUp.id = cob::kErrorControlBase + nodeId_;
-  bootUp.dlc = 1;
-  bootUp.data[0] = static_cast<uint8_t>(NmtState::kInitialising);
-  services_.tx.send(bootUp);
+  services_.heartbeat.send(NmtState::kInitialising);  // the boot-up frame
   setState(NmtState::kPreOperational);
   services_.heartbeat.restart(services_.clock.now);
   if (automaticStart_) {

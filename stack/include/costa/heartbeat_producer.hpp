@@ -27,6 +27,9 @@ class HeartbeatProducer : public ObjectHook {
 
   /// Sends a heartbeat carrying `state` when due.
   void process(Microseconds now, NmtState state) noexcept;
+  /// Sends the frame of 0x700+id carrying `state` now, outside the period: the boot-up is this
+  /// frame with state 0 (initialising), CiA 301 7.2.8.3.2.1.
+  void send(NmtState state) noexcept;
   Microseconds nextDeadline() const noexcept { return next_; }
 
   /// 0x1017 write: store, then restart with the new period.
