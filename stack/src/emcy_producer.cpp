@@ -1,6 +1,7 @@
 #include "costa/emcy_producer.hpp"
 
 #include "costa/cob_ids.hpp"
+#include "costa/od/bytes.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa {
@@ -170,9 +171,7 @@ void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) n
     CanFrame frame;
     frame.id = cob & 0x7FFU;
     frame.dlc = 8;
-    for (size_t i = 0; i < 8U; ++i) {
-      frame.data[i] = pending_[pendingHead_].data[i];
-    }
+    copyBytes(frame.data, pending_[pendingHead_].data, sizeof frame.data);
     tx.send(frame);
     pendingHead_ = pendingHead_ + 1U == pendingCapacity_ ? 0U : pendingHead_ + 1U;
     --pendingCount_;
