@@ -141,8 +141,8 @@ void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
   } else {
     storeU16(slot.data, code);
     slot.data[2] = registerValue;
-    for (size_t i = 0; manufacturer != nullptr && i < 5U; ++i) {
-      slot.data[3U + i] = manufacturer[i];
+    if (manufacturer != nullptr) {
+      copyBytes(&slot.data[3], manufacturer, 5);
     }
   }
   ++pendingCount_;
