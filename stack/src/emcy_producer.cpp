@@ -209,7 +209,7 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
     return AbortCode::kNone;
   }
   if (ref.index() == kCobIdIndex && length == 4U) {
-    const uint32_t value = loadU32(data);
+    const auto value = static_cast<uint32_t>(loadLittleEndian(data, length));
     const uint32_t current = cobId();
     const bool wasValid = (current & 0x80000000U) == 0U;
     const bool willBeValid = (value & 0x80000000U) == 0U;

@@ -83,7 +83,7 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
   if (index == kCobIdIndex && length == 4U) {
     // SYNC has no valid bit: a restricted CAN-ID is refused even to consume (0x601 is SDO); a
     // producer stops producing before it changes the CAN-ID.
-    const uint32_t value = loadU32(data);
+    const auto value = static_cast<uint32_t>(loadLittleEndian(data, length));
     const bool producing = producer_ && (value & 0x40000000U) != 0U;
     if (!cob::acceptableCobId(value, true, producing, canId_)) {
       return AbortCode::kInvalidValue;
