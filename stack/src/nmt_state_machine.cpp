@@ -132,8 +132,7 @@ void NmtStateMachine::setState(NmtState state) noexcept {
   }
   if (previous == NmtState::kOperational) {
     services_.pdos.stop();
-  }
-  if (state == NmtState::kOperational) {
+  } else if (state == NmtState::kOperational) {  // a change: not from operational
     services_.pdos.start(services_.clock.now);
   }
   services_.clock.scheduleNow();  // what the new state allows may be due
