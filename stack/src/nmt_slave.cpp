@@ -2,32 +2,46 @@
 
 namespace costa {
 
+namespace {
+
+/// What each NMT command asks for: a state to enter, or a reset.
+struct CommandRow {
+  NmtCommand command;
+  NmtSlave::Action action;
+  NmtState state;
+};
+
+constexpr CommandRow kCommands[] = {
+    {NmtCommand::kStart, NmtSlave::Action::kEnterState, NmtState::kOperational},
+    {NmtCommand::kStop, NmtSlave::Action::kEnterState, NmtState::kStopped},
+    {NmtCommand::kEnterPreOperational, NmtSlave::Action::kEnterState, NmtState::kPreOperational},
+    {NmtCommand::kResetNode, NmtSlave::Action::kResetNode, NmtState::kInitialising},
+    {NmtCommand::kResetCommunication, NmtSlave::Action::kResetCommunication,
+     NmtState::kInitialising},
+};
+
+}  // namespace
+
 NmtSlave::Decision NmtSlave::decide(const CanFrame& frame, uint8_t nodeId,
                                     NmtState current) noexcept {
-  Decision decision;
   if (frame.dlc != 2U || frame.rtr || frame.extended) {
-    return decision;
+    return {};
   }
   const uint8_t target = frame.data[1];
   if (target != 0U && target != nodeId) {
-    return decision;
+    return {};
   }
-  NmtState next = current;
-  switch (static_cast<NmtCommand>(frame.data[0])) {
-    case NmtCommand::kStart: next = NmtState::kOperational; break;
-    case NmtCommand::kStop: next = NmtState::kStopped; break;
-    case NmtCommand::kEnterPreOperational: next = NmtState::kPreOperational; break;
-    case NmtCommand::kResetNode: decision.action = Action::kResetNode; return decision;
-    case NmtCommand::kResetCommunication:
-      decision.action = Action::kResetCommunication;
-      return decision;
-    default: return decision;
+  for (const CommandRow& row : kCommands) {
+    if (frame.data[0] != static_cast<uint8_t>(row.command)) {
+      continue;
+    }
+    if (row.action == Action::kEnterState &&
+        (row.state == current || current == NmtState::kInitialising)) {
+      return {};  // already there, or a reset still running: nothing to change
+    }
+    return {row.action, row.state};
   }
-  if (next != current && current != NmtState::kInitialising) {
-    decision.action = Action::kEnterState;
-    decision.state = next;
-  }
-  return decision;
+  return {};  // an unknown command
 }
 
 const char* describe(NmtState state) noexcept {
