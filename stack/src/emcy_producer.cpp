@@ -168,11 +168,7 @@ void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) n
   }
   const auto inhibit = dictionary_.readUnsigned32(kInhibitIndex, 0, 0) * kHundredMicroseconds;
   while (pendingCount_ != 0U && nextAllowed_ == kNever) {
-    CanFrame frame;
-    frame.id = cob & 0x7FFU;
-    frame.dlc = 8;
-    copyBytes(frame.data, pending_[pendingHead_].data, sizeof frame.data);
-    tx.send(frame);
+    tx.send(cob & 0x7FFU, pending_[pendingHead_].data, sizeof(pending_->data));
     pendingHead_ = pendingHead_ + 1U == pendingCapacity_ ? 0U : pendingHead_ + 1U;
     --pendingCount_;
     if (inhibit != 0U) {

@@ -31,11 +31,8 @@ void HeartbeatProducer::process(Microseconds now, NmtState state) noexcept {
 }
 
 void HeartbeatProducer::send(NmtState state) noexcept {
-  CanFrame frame;
-  frame.id = cob::kErrorControlBase + nodeId_;
-  frame.dlc = 1;
-  frame.data[0] = static_cast<uint8_t>(state);
-  tx_.send(frame);
+  const auto value = static_cast<uint8_t>(state);
+  tx_.send(cob::kErrorControlBase + nodeId_, &value, 1);
 }
 
 AbortCode HeartbeatProducer::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,

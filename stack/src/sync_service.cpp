@@ -62,16 +62,14 @@ bool SyncService::process(Microseconds now, bool allowed, SyncEvent* event) noex
   if (!allowed) {
     return false;
   }
-  CanFrame frame;
-  frame.id = canId_;
+  uint8_t length = 0;
   event->counter = 0;
   if (overflow_ >= 2U) {
-    frame.dlc = 1;
-    frame.data[0] = counter_;
+    length = 1;
     event->counter = counter_;
     counter_ = counter_ >= overflow_ ? 1U : static_cast<uint8_t>(counter_ + 1U);
   }
-  tx_.send(frame);
+  tx_.send(canId_, &event->counter, length);  // the counter is the SYNC's one byte
   event->time = now;
   event->windowEnd = windowEnd(now);
   return true;

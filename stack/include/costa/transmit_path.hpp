@@ -46,6 +46,11 @@ class TransmitPath {
     queue_.push(frame, expiry);
   }
 
+  /// send() of the 11-bit data frame `id` carrying `length` (0..8) bytes of `data`, zeros after
+  /// them: the frame built in one place for the services that send a few bytes (heartbeat,
+  /// SYNC, EMCY).
+  void send(uint32_t id, const uint8_t* data, uint8_t length) noexcept;
+
   /// Offers queued frames to the controller, oldest first, until it refuses one or a gate is
   /// closed; frames whose expiry is before `now` are dropped (expired()).
   void flush(Microseconds now) noexcept;
