@@ -47,9 +47,7 @@ bool SyncService::onFrame(const CanFrame& frame, Microseconds now, SyncEvent* ev
   }
   clearLengthError();
   event->counter = expected != 0U ? frame.data[0] : 0U;
-  event->time = now;
-  event->windowEnd = windowEnd(now);
-  return true;
+  return report(now, event);
 }
 
 bool SyncService::process(Microseconds now, bool allowed, SyncEvent* event) noexcept {
@@ -70,9 +68,7 @@ bool SyncService::process(Microseconds now, bool allowed, SyncEvent* event) noex
     counter_ = counter_ >= overflow_ ? 1U : static_cast<uint8_t>(counter_ + 1U);
   }
   tx_.send(canId_, &event->counter, length);  // the counter is the SYNC's one byte
-  event->time = now;
-  event->windowEnd = windowEnd(now);
-  return true;
+  return report(now, event);
 }
 
 AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,

@@ -5,6 +5,7 @@
 
 #include <stdint.h>
 
+#include "costa/hot_path.hpp"
 #include "costa/node_clock.hpp"
 #include "costa/object_hook.hpp"
 #include "costa/port/can_frame.hpp"
@@ -69,8 +70,12 @@ class SyncService : public ObjectHook {
   bool producing() const noexcept { return producer_ && period_ != 0U; }
   void readParameters() noexcept;
   void clearLengthError() noexcept;
-  Microseconds windowEnd(Microseconds time) const noexcept {
-    return window_ == 0U ? kNever : at(time, window_);
+  /// The time of a SYNC seen at `now` and the end of its window into `event`; true (the SYNC is
+  /// reported). One copy for the SYNC received and the SYNC produced.
+  COSTA_SHARED_INLINE bool report(Microseconds now, SyncEvent* event) const noexcept {
+    event->time = now;
+    event->windowEnd = window_ == 0U ? kNever : at(now, window_);
+    return true;
   }
 
   od::ObjectDictionary& dictionary_;
