@@ -108,16 +108,19 @@ void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
   if (count < capacity) {
     ++count;
   }
-  for (uint8_t sub = count; sub > 1U; --sub) {
-    dictionary_.storeUnsigned(
-        kErrorHistoryIndex, sub,
-        dictionary_.readUnsigned32(kErrorHistoryIndex, static_cast<uint8_t>(sub - 1U), 0));
-  }
   uint32_t info = 0;
   if (manufacturer != nullptr) {
     info = static_cast<uint32_t>(manufacturer[0]) | (static_cast<uint32_t>(manufacturer[1]) << 8U);
   }
-  dictionary_.storeUnsigned(kErrorHistoryIndex, 1, code | (info << 16U));
+  // The newest error into sub-index 1, each older one a sub-index up (the oldest of a full
+  // history drops out): one pass that carries each value to the next sub-index.
+  uint32_t value = code | (info << 16U);
+  for (unsigned sub = 1; sub <= count; ++sub) {
+    const uint32_t older =
+        dictionary_.readUnsigned32(kErrorHistoryIndex, static_cast<uint8_t>(sub), 0);
+    dictionary_.storeUnsigned(kErrorHistoryIndex, static_cast<uint8_t>(sub), value);
+    value = older;
+  }
   dictionary_.storeUnsigned(kErrorHistoryIndex, 0, count);
 }
 
