@@ -92,10 +92,7 @@ void EmcyProducer::signal(uint16_t code, uint8_t registerBits,
 }
 
 void EmcyProducer::publishRegister() noexcept {
-  const od::EntryRef ref = dictionary_.find(kErrorRegisterIndex, 0);
-  if (ref.valid()) {
-    dictionary_.storeUnsigned(ref, errorRegister());
-  }
+  dictionary_.storeUnsigned(kErrorRegisterIndex, 0, errorRegister());  // when 0x1001 is there
 }
 
 void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
