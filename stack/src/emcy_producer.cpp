@@ -5,6 +5,15 @@
 #include "costa/od/little_endian.hpp"
 
 namespace costa {
+namespace {
+
+/// The sub-indices of the error history 0x1003, sub-index 0 included; 0 without the object.
+unsigned historyEntries(const od::ObjectDictionary& dictionary) noexcept {
+  const od::Object* history = dictionary.findObject(EmcyProducer::kErrorHistoryIndex);
+  return history == nullptr ? 0U : dictionary.entryCount(*history);
+}
+
+}  // namespace
 
 uint8_t errorRegisterBitFor(uint16_t code) noexcept {
   switch (code >> 12U) {
@@ -96,11 +105,11 @@ void EmcyProducer::publishRegister() noexcept {
 }
 
 void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
-  const od::Object* history = dictionary_.findObject(kErrorHistoryIndex);
-  if (history == nullptr || dictionary_.entryCount(*history) < 2U) {
-    return;
+  const unsigned entries = historyEntries(dictionary_);
+  if (entries < 2U) {
+    return;  // no history, or one without room for an error
   }
-  const auto capacity = static_cast<uint8_t>(dictionary_.entryCount(*history) - 1U);
+  const auto capacity = static_cast<uint8_t>(entries - 1U);
   auto count = static_cast<uint8_t>(dictionary_.readUnsigned32(kErrorHistoryIndex, 0, 0));
   if (count < capacity) {
     ++count;
@@ -199,7 +208,7 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
       return AbortCode::kInvalidValue;
     }
     // Every sub-index to 0, the last first: one loop ends with sub-index 0, the count.
-    for (unsigned sub = dictionary.entryCount(*ref.object); sub-- != 0U;) {
+    for (unsigned sub = historyEntries(dictionary); sub-- != 0U;) {
       dictionary.storeUnsigned(kErrorHistoryIndex, static_cast<uint8_t>(sub), 0);
     }
     return AbortCode::kNone;
