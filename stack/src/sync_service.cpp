@@ -92,15 +92,18 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
     }
   }
   const bool wasProducing = producing();
-  const uint8_t counter = counter_;
   const AbortCode written = dictionary.write(ref, data, length);
-  if (written == AbortCode::kNone && index == kWindowIndex) {
+  if (written != AbortCode::kNone) {
+    return written;
+  }
+  if (index == kWindowIndex) {
     readParameters();  // the window alone: the cycle and its counter go on
-  } else if (written == AbortCode::kNone) {
-    configure(clock_.now);  // the period from the write
-    if (wasProducing && producing()) {
-      counter_ = counter;  // a running cycle keeps its counter
-    }
+    return written;
+  }
+  const uint8_t counter = counter_;
+  configure(clock_.now);  // the period from the write
+  if (wasProducing && producing()) {
+    counter_ = counter;  // a running cycle keeps its counter
   }
   return written;
 }
