@@ -11,9 +11,12 @@ void ErrorControl::reset(uint8_t nodeId) noexcept {
     if (guarding_.expired()) {
       emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
     }
-    for (uint8_t entry = 1; consumer_.monitor(entry) != nullptr; ++entry) {
-      const HeartbeatMonitor& monitor = *consumer_.monitor(entry);
-      if (monitor.timedOut || monitor.withdrawnFrom != 0U) {
+    for (uint8_t entry = 1;; ++entry) {
+      const HeartbeatMonitor* monitor = consumer_.monitor(entry);
+      if (monitor == nullptr) {
+        break;  // past the last entry of 0x1016
+      }
+      if (monitor->timedOut || monitor->withdrawnFrom != 0U) {
         emcy_.clear(kEmcyLifeGuardOrHeartbeat, entry);
       }
     }
