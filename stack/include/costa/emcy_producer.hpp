@@ -36,8 +36,9 @@ enum ErrorRegisterBit : uint8_t {
 uint8_t errorRegisterBitFor(uint16_t code) noexcept;
 
 /// An active error condition. `source` tells apart conditions sharing a code (for example one
-/// heartbeat consumer entry from another).
-struct EmcyCondition {
+/// heartbeat consumer entry from another). Aligned as a word: clearing one moves the last into
+/// its place with one load and one store.
+struct alignas(4) EmcyCondition {
   uint16_t code = 0;
   uint8_t source = 0;
   uint8_t registerBits = 0;
