@@ -82,8 +82,7 @@ bool EmcyProducer::raise(uint16_t code, uint8_t source, uint8_t registerBits,
 bool EmcyProducer::clear(uint16_t code, uint8_t source) noexcept {
   for (size_t i = 0; i < count_; ++i) {
     if (conditions_[i].code == code && conditions_[i].source == source) {
-      conditions_[i] = conditions_[count_ - 1U];
-      --count_;
+      conditions_[i] = conditions_[--count_];  // the last takes its place
       publishRegister();
       if (count_ == 0U && profile_.errorResetFrame) {
         enqueue(0x0000, 0, nullptr);
