@@ -198,21 +198,14 @@ uint32_t LssSlave::identityValue(uint8_t sub) const noexcept {
 }
 
 void LssSlave::respond(uint8_t cs, uint8_t byte1) noexcept {
-  CanFrame frame;
-  frame.id = cob::kLssToMaster;
-  frame.dlc = 8;
-  frame.data[0] = cs;
-  frame.data[1] = byte1;
-  tx_.send(frame);
+  const uint8_t data[8] = {cs, byte1};  // the reserved bytes are zero
+  tx_.send(cob::kLssToMaster, data, 8);
 }
 
 void LssSlave::respondValue(uint8_t cs, uint32_t value) noexcept {
-  CanFrame frame;
-  frame.id = cob::kLssToMaster;
-  frame.dlc = 8;
-  frame.data[0] = cs;
-  storeU32(frame.data + 1, value);
-  tx_.send(frame);
+  uint8_t data[8] = {cs};
+  storeU32(data + 1, value);
+  tx_.send(cob::kLssToMaster, data, 8);
 }
 
 }  // namespace costa

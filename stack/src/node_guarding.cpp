@@ -30,11 +30,8 @@ void NodeGuarding::restartLife(Microseconds now) noexcept {
 }
 
 NodeGuarding::Event NodeGuarding::onRequest(NmtState state, Microseconds now) noexcept {
-  CanFrame reply;
-  reply.id = cob::kErrorControlBase + nodeId_;
-  reply.dlc = 1;
-  reply.data[0] = static_cast<uint8_t>(static_cast<uint8_t>(state) | (toggle_ << 7U));
-  tx_.send(reply);
+  const auto reply = static_cast<uint8_t>(static_cast<uint8_t>(state) | (toggle_ << 7U));
+  tx_.send(cob::kErrorControlBase + nodeId_, &reply, 1);
   toggle_ ^= 1U;
   guarded_ = true;
   restartLife(now);

@@ -102,11 +102,9 @@ void TimeService::process(Microseconds now, bool allowed) noexcept {
     return;
   }
   advanceTo(now);
-  CanFrame frame;
-  frame.id = canId_;
-  frame.dlc = kLength;
-  encode(base_, frame.data);
-  tx_.send(frame);
+  uint8_t data[kLength];
+  encode(base_, data);
+  tx_.send(canId_, data, kLength);
 }
 
 void TimeService::encode(const TimeOfDay& time, uint8_t* bytes) noexcept {
