@@ -42,15 +42,15 @@ size_t unspecifiedExpeditedLength(const od::EntryRef& ref, const uint8_t* data) 
 SdoServer::SdoServer(ObjectAccess& access, TransmitPath& tx, const SdoProfile& profile,
                      NodeClock& clock, uint8_t* buffer, size_t bufferSize,
                      Microseconds timeout) noexcept
-    : access_(access),
+    : timeout_(timeout),
+      access_(access),
       clock_(clock),
       channel_(tx, profile),
       profile_(profile),
       reader_(access, buffer, bufferSize),
       writer_(access, buffer, bufferSize),
       blockDownload_(channel_, writer_),
-      blockUpload_(channel_, reader_),
-      timeout_(timeout) {}
+      blockUpload_(channel_, reader_) {}
 
 void SdoServer::reset() noexcept {
   endTransfer(AbortCode::kGeneral);

@@ -149,25 +149,28 @@ class SdoServer {
   }
   void respond(const uint8_t (&data)[8]) noexcept { channel_.send(data); }
 
+  // The small fields first: Thumb-1 loads and stores reach a byte only 31 bytes from the object's
+  // start (a word 124), so every field behind the reader and the writer would cost an address
+  // computation at each use.
+  State state_ = State::kIdle;
+  uint8_t toggleBit_ = 0;  ///< the toggle of the next segment, where it lies in byte 0: 0 or 0x10
+  uint8_t subIndex_ = 0;
+  uint16_t index_ = 0;
+  size_t size_ = 0;  ///< Total bytes of a segmented upload.
+  size_t done_ = 0;  ///< Bytes uploaded so far.
+  Microseconds deadline_ = kNever;
+  Microseconds lastCall_ = 0;  ///< `now` of the latest call.
+  Microseconds timeout_;
+
   ObjectAccess& access_;
   NodeClock& clock_;
   SdoChannel channel_;
   const SdoProfile& profile_;
+  od::EntryRef ref_;
   SdoValueReader reader_;
   SdoValueWriter writer_;
   ServiceIf<features::kSdoBlockTransfer, SdoBlockDownload, CompiledOut> blockDownload_;
   ServiceIf<features::kSdoBlockTransfer, SdoBlockUpload, CompiledOut> blockUpload_;
-  Microseconds timeout_;
-
-  State state_ = State::kIdle;
-  od::EntryRef ref_;
-  uint16_t index_ = 0;
-  uint8_t subIndex_ = 0;
-  uint8_t toggleBit_ = 0;  ///< the toggle of the next segment, where it lies in byte 0: 0 or 0x10
-  size_t size_ = 0;        ///< Total bytes of a segmented upload.
-  size_t done_ = 0;        ///< Bytes uploaded so far.
-  Microseconds deadline_ = kNever;
-  Microseconds lastCall_ = 0;  ///< `now` of the latest call.
 };
 
 }  // namespace costa
