@@ -113,7 +113,7 @@ bool SdoServer::locateDownload(const uint8_t* request) noexcept {
   subIndex_ = request[3];
   const AbortCode located = access_.locateForWrite(index_, subIndex_, &ref_);
   if (located != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, located);
+    refuse(located);
     return false;
   }
   return true;
@@ -156,14 +156,13 @@ void SdoServer::initiateSegmentedDownload(const uint8_t* request, Microseconds n
   const AbortCode begun =
       writer_.begin(ref_, sizeIndicated ? indicatedSize(loadU32(request + 4)) : kSizeNotIndicated);
   if (begun != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, begun);
+    refuse(begun);
     return;
   }
   state_ = State::kDownloadSegments;
   toggleBit_ = 0;
   armTimeout(now);
-  const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
-  respond(response);
+  answer(kScsInitiateDownloadResponse);
 }
 
 void SdoServer::downloadByCountAlone(const uint8_t* request) noexcept {
@@ -178,11 +177,10 @@ void SdoServer::finishExpedited(const uint8_t* request, AbortCode verdict) noexc
     verdict = writer_.writeWhole(ref_, request + 4, ref_.size());
   }
   if (verdict != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, verdict);
+    refuse(verdict);
     return;
   }
-  const uint8_t response[8] = {kScsInitiateDownloadResponse, request[1], request[2], subIndex_};
-  respond(response);
+  answer(kScsInitiateDownloadResponse);
 }
 
 // NOLINTNEXTLINE(misc-no-recursion): calls onRequest() once with 8 bytes, which never come back
@@ -271,34 +269,31 @@ void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexce
     return;
   }
   const size_t count = kSegmentBytes - ((request[0] >> 1U) & 0x07U);
-  const AbortCode appended = writer_.append(request + 1, count);
-  if (appended != AbortCode::kNone) {
-    abortTransfer(appended);
+  const bool last = (request[0] & 0x01U) != 0U;
+  AbortCode verdict = writer_.append(request + 1, count);
+  if (verdict == AbortCode::kNone && last) {
+    verdict = writer_.finish();
+  }
+  if (verdict != AbortCode::kNone) {
+    abortTransfer(verdict);
     return;
   }
-  extendTimeout(now);
-  if ((request[0] & 0x01U) != 0U) {
-    finishDownload();
-    return;
+  // Every segment's response, the last one's too: nothing but the toggle of the segment.
+  channel_.send(static_cast<uint8_t>(kScsDownloadSegmentResponse | toggleBit_), 0, 0, 0);
+  if (last) {
+    endTransfer(AbortCode::kNone);
+  } else {
+    toggleBit_ ^= kToggleBit;
+    extendTimeout(now);
   }
-  const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | toggleBit_)};
-  respond(response);
-  toggleBit_ ^= kToggleBit;
 }
 
-void SdoServer::finishDownload() noexcept {
-  const AbortCode written = writer_.finish();
-  if (written != AbortCode::kNone) {
-    abortTransfer(written);
-    return;
-  }
-  const uint8_t response[8] = {static_cast<uint8_t>(kScsDownloadSegmentResponse | toggleBit_)};
-  respond(response);
-  endTransfer(AbortCode::kNone);
+void SdoServer::refuse(AbortCode code) noexcept {
+  sendAbort(index_, subIndex_, code);
 }
 
 void SdoServer::abortTransfer(AbortCode code) noexcept {
-  sendAbort(index_, subIndex_, code);
+  refuse(code);
   endTransfer(code);
 }
 

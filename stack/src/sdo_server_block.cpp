@@ -71,7 +71,7 @@ void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) no
   }
   const uint8_t threshold = request[kProtocolSwitchByte];
   if (threshold != 0U && size <= threshold) {
-    answerUpload(request, size, now);  // expedited or segmented instead
+    answerUpload(size, now);  // expedited or segmented instead
     return;
   }
   blockUpload_.start(request, size);

@@ -24,7 +24,7 @@ void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcep
   copyBytes(details.requestData, request + 4, 4);
   const AbortCode prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
   if (prepared != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, prepared);
+    refuse(prepared);
     return;
   }
   // The usual read straight from the dictionary into the answer; built for size, every read
@@ -36,10 +36,10 @@ void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcep
   size_t size = 0;
   const AbortCode begun = reader_.begin(ref_, &size);
   if (begun != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, begun);
+    refuse(begun);
     return;
   }
-  answerUpload(request, size, now);
+  answerUpload(size, now);
 }
 
 COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcept {
@@ -55,20 +55,18 @@ COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcep
   channel_.send(response);
 }
 
-// The initiate upload response, expedited or segmented, for a value the reader has begun.
-void SdoServer::answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept {
-  uint8_t response[8] = {0, request[1], request[2], subIndex_};
+void SdoServer::answerUpload(size_t size, Microseconds now) noexcept {
   if (size >= 1U && size <= 4U) {
-    const AbortCode read = reader_.read(0, response + 4, size);
+    uint8_t value[4] = {};  // a value of fewer than 4 bytes is followed by zeros
+    const AbortCode read = reader_.read(0, value, size);
     if (read != AbortCode::kNone) {
-      sendAbort(index_, subIndex_, read);
+      refuse(read);
       return;
     }
-    response[0] =
-        profile_.expeditedUpload == ExpeditedUploadFormat::kSizeIndicated
-            ? static_cast<uint8_t>(kScsInitiateUploadResponse | ((4U - size) << 2U) | 0x03U)
-            : static_cast<uint8_t>(kScsInitiateUploadResponse | 0x02U);
-    respond(response);
+    answer(profile_.expeditedUpload == ExpeditedUploadFormat::kSizeIndicated
+               ? static_cast<uint8_t>(kScsInitiateUploadResponse | ((4U - size) << 2U) | 0x03U)
+               : static_cast<uint8_t>(kScsInitiateUploadResponse | 0x02U),
+           loadU32(value));
     return;
   }
   size_ = size;
@@ -76,9 +74,7 @@ void SdoServer::answerUpload(const uint8_t* request, size_t size, Microseconds n
   toggleBit_ = 0;
   state_ = State::kUploadSegments;
   armTimeout(now);
-  response[0] = kScsInitiateUploadResponse | 0x01U;
-  storeU32(response + 4, static_cast<uint32_t>(size));
-  respond(response);
+  answer(kScsInitiateUploadResponse | 0x01U, static_cast<uint32_t>(size));
 }
 
 void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept {

@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "costa/cob_ids.hpp"
+#include "costa/hot_path.hpp"
 #include "costa/od/abort_code.hpp"
 #include "costa/od/bytes.hpp"
 #include "costa/od/little_endian.hpp"
@@ -39,6 +40,19 @@ class SdoChannel {
     copyBytes(frame.data, data, 8);
     tx_.send(frame);
   }
+  /// Sends the response that most SDO frames are: byte 0 `command`, the multiplexer (`index`,
+  /// `subIndex`), then `data` in bytes 4..7, little-endian. Built straight into the frame, as
+  /// one copy that every response and abort shares.
+  COSTA_SHARED_INLINE void send(uint8_t command, uint16_t index, uint8_t subIndex,
+                                uint32_t data) noexcept {
+    CanFrame frame;
+    address(frame);
+    frame.data[0] = command;
+    storeU16(frame.data + 1, index);
+    frame.data[3] = subIndex;
+    storeU32(frame.data + 4, data);
+    tx_.send(frame);
+  }
 
   /// Queues an abort frame (CiA 301 7.2.4.3.17).
   void sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept {
@@ -46,10 +60,7 @@ class SdoChannel {
         (code == AbortCode::kValueTooHigh || code == AbortCode::kValueTooLow)) {
       code = AbortCode::kInvalidValue;
     }
-    uint8_t data[8] = {0x80, static_cast<uint8_t>(index), static_cast<uint8_t>(index >> 8U),
-                       subIndex};
-    storeU32(data + 4, static_cast<uint32_t>(code));
-    send(data);
+    send(kAbortCommand, index, subIndex, static_cast<uint32_t>(code));
   }
 
   /// Whether a burst may queue another frame. A quarter of the queue stays free for the other
@@ -57,6 +68,8 @@ class SdoChannel {
   bool roomForBurst() const noexcept { return tx_.roomForBurst(); }
 
  private:
+  static constexpr uint8_t kAbortCommand = 0x80;  ///< byte 0 of an abort: cs 4, nothing else
+
   TransmitPath& tx_;
   const SdoProfile& profile_;
   uint32_t canId_ = cob::kSdoTxBase;

@@ -116,7 +116,8 @@ class SdoServer {
   void downloadSegment(const uint8_t* request, Microseconds now) noexcept;
   /// An initiate upload request while no transfer runs.
   void initiateUpload(const uint8_t* request, Microseconds now) noexcept;
-  void answerUpload(const uint8_t* request, size_t size, Microseconds now) noexcept;
+  /// The initiate upload response, expedited or segmented, for a value the reader has begun.
+  void answerUpload(size_t size, Microseconds now) noexcept;
   /// The expedited answer to an upload of a numeric value of up to 4 bytes.
   COSTA_HOT_INLINE void answerExpedited(const uint8_t* request) noexcept;
   /// The next segment of an upload. Itself only the usual segment: seven bytes of a snapshot
@@ -125,7 +126,6 @@ class SdoServer {
   /// uploadSegment() for the others: a streamed value's segment (or one of a value that fills
   /// the buffer), a wrong toggle bit.
   [[gnu::noinline]] void uploadOtherSegment(const uint8_t* request, Microseconds now) noexcept;
-  void finishDownload() noexcept;
   bool isClientAbort(const uint8_t* request) const noexcept;
   // Block transfers (sdo_server_block.cpp, compiled only with features::kSdoBlockTransfer).
   /// A block upload sub-block has segments to queue and the transmit queue has room for them.
@@ -139,6 +139,15 @@ class SdoServer {
   void afterBlockStep(AbortCode result, bool finished, Microseconds now) noexcept;
 
   void sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept;
+  /// The response to the request of the transfer (index_, subIndex_): `command`, the
+  /// multiplexer, `data` in bytes 4..7.
+  void answer(uint8_t command, uint32_t data = 0) noexcept {
+    channel_.send(command, index_, subIndex_, data);
+  }
+  /// The abort of the request of the transfer (index_, subIndex_), which leaves the state as it
+  /// is: a request refused while no transfer runs.
+  void refuse(AbortCode code) noexcept;
+  /// refuse(), then the transfer is over.
   void abortTransfer(AbortCode code) noexcept;
   /// The transfer is over (`reason` kNone: completed): idle, no deadline; an open streamed
   /// download is told `reason`.
@@ -147,7 +156,6 @@ class SdoServer {
     state_ = State::kIdle;
     deadline_ = kNever;
   }
-  void respond(const uint8_t (&data)[8]) noexcept { channel_.send(data); }
 
   // The small fields first: Thumb-1 loads and stores reach a byte only 31 bytes from the object's
   // start (a word 124), so every field behind the reader and the writer would cost an address
