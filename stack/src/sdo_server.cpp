@@ -42,10 +42,10 @@ size_t unspecifiedExpeditedLength(const od::EntryRef& ref, const uint8_t* data) 
 SdoServer::SdoServer(ObjectAccess& access, TransmitPath& tx, const SdoProfile& profile,
                      NodeClock& clock, uint8_t* buffer, size_t bufferSize,
                      Microseconds timeout) noexcept
-    : timeout_(timeout),
+    : channel_(tx, profile),
+      timeout_(timeout),
       access_(access),
       clock_(clock),
-      channel_(tx, profile),
       profile_(profile),
       reader_(access, buffer, bufferSize),
       writer_(access, buffer, bufferSize),

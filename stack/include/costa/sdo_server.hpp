@@ -157,9 +157,11 @@ class SdoServer {
     deadline_ = kNever;
   }
 
-  // The small fields first: Thumb-1 loads and stores reach a byte only 31 bytes from the object's
-  // start (a word 124), so every field behind the reader and the writer would cost an address
-  // computation at each use.
+  // The channel first, then the small fields: the channel's address is the server's own, which
+  // every response passes as is, and Thumb-1 loads and stores reach a byte only 31 bytes from
+  // the object's start (a word 124), so every field behind the reader and the writer would cost
+  // an address computation at each use.
+  SdoChannel channel_;
   State state_ = State::kIdle;
   uint8_t toggleBit_ = 0;  ///< the toggle of the next segment, where it lies in byte 0: 0 or 0x10
   uint8_t subIndex_ = 0;
@@ -172,7 +174,6 @@ class SdoServer {
 
   ObjectAccess& access_;
   NodeClock& clock_;
-  SdoChannel channel_;
   const SdoProfile& profile_;
   od::EntryRef ref_;
   SdoValueReader reader_;
