@@ -4,7 +4,7 @@ namespace costa {
 
 AbortCode SdoValueReader::beginStreamed(size_t* size) noexcept {
   size_t produced = 0;
-  const AbortCode sized = access_.readStream(ref_, 0, buffer_, 0, &produced, &size_);
+  const AbortCode sized = access_.readStream(*ref_, 0, buffer_, 0, &produced, &size_);
   if (sized == AbortCode::kNone) {
     *size = size_;
   }
@@ -14,7 +14,7 @@ AbortCode SdoValueReader::beginStreamed(size_t* size) noexcept {
 AbortCode SdoValueReader::readStreamed(size_t offset, uint8_t* destination, size_t count) noexcept {
   size_t produced = 0;
   size_t total = 0;
-  const AbortCode got = access_.readStream(ref_, offset, destination, count, &produced, &total);
+  const AbortCode got = access_.readStream(*ref_, offset, destination, count, &produced, &total);
   if (got != AbortCode::kNone) {
     return got;
   }

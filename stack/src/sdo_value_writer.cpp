@@ -33,7 +33,7 @@ AbortCode SdoValueWriter::writeStreamWhole(const od::EntryRef& ref, const uint8_
 }
 
 AbortCode SdoValueWriter::begin(const od::EntryRef& ref, size_t indicatedSize) noexcept {
-  ref_ = ref;
+  ref_ = &ref;
   streamed_ = sdoStreams(ref, bufferSize_);
   indicated_ = indicatedSize;
   received_ = 0;
@@ -83,7 +83,8 @@ AbortCode SdoValueWriter::append(const uint8_t* data, size_t length) noexcept {
 
 AbortCode SdoValueWriter::flush(bool last) noexcept {
   const size_t pending = received_ - flushed_;
-  const AbortCode written = access_.writeStream(ref_, flushed_, buffer_, pending, last, indicated_);
+  const AbortCode written =
+      access_.writeStream(*ref_, flushed_, buffer_, pending, last, indicated_);
   if (written == AbortCode::kNone) {
     flushed_ = received_;
   }
@@ -94,7 +95,7 @@ AbortCode SdoValueWriter::finish() noexcept {
   if (indicated_ != kSizeNotIndicated && received_ != indicated_) {
     return AbortCode::kLengthMismatch;
   }
-  const AbortCode written = streamed_ ? flush(true) : access_.write(ref_, buffer_, received_);
+  const AbortCode written = streamed_ ? flush(true) : access_.write(*ref_, buffer_, received_);
   if (written == AbortCode::kNone) {
     open_ = false;
   }

@@ -21,11 +21,12 @@ class SdoValueReader {
 
   /// Starts an upload of `ref` (already prepared with ObjectAccess::prepareRead): copies a
   /// buffered value into the buffer (the snapshot the whole transfer sends), or asks the
-  /// streaming hook for the value's size. Sets `*size` to the bytes to transfer.
+  /// streaming hook for the value's size. Sets `*size` to the bytes to transfer. `ref` is the
+  /// transfer's own (the server's), which stays as it is until the transfer ends.
   AbortCode begin(const od::EntryRef& ref, size_t* size) noexcept {
     streamed_ = sdoStreams(ref, bufferSize_);
     if (streamed_) {
-      ref_ = ref;  // the hook is asked for every piece
+      ref_ = &ref;  // the hook is asked for every piece
       padded_ = false;
       return beginStreamed(size);
     }
@@ -67,7 +68,7 @@ class SdoValueReader {
   ObjectAccess& access_;
   uint8_t* buffer_;
   size_t bufferSize_;
-  od::EntryRef ref_;
+  const od::EntryRef* ref_ = nullptr;  ///< a streamed value's entry
   bool streamed_ = false;
   bool padded_ = false;  ///< kZeroTail zeros follow the snapshot
   size_t size_ = 0;

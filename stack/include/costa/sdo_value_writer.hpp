@@ -32,7 +32,8 @@ class SdoValueWriter {
 
   /// Starts a segmented or block download of `ref` with `indicatedSize` bytes (or
   /// kSizeNotIndicated): refuses a size the entry or the buffer cannot take, or lets a streaming
-  /// hook refuse. Nothing is left to cancel after a refusal.
+  /// hook refuse. Nothing is left to cancel after a refusal. `ref` is the transfer's own (the
+  /// server's), which stays as it is until the transfer ends.
   AbortCode begin(const od::EntryRef& ref, size_t indicatedSize) noexcept;
 
   /// Adds the next `length` bytes: kLengthMismatch beyond the indicated size, kLengthTooHigh
@@ -48,7 +49,7 @@ class SdoValueWriter {
   /// (the usual case: every transfer's end cancels, the end of an upload too).
   void cancel(AbortCode reason) noexcept {
     if (open_ && streamed_) {
-      access_.abortWriteStream(ref_, reason);
+      access_.abortWriteStream(*ref_, reason);
     }
     open_ = false;
   }
@@ -66,7 +67,7 @@ class SdoValueWriter {
   ObjectAccess& access_;
   uint8_t* buffer_;
   size_t bufferSize_;
-  od::EntryRef ref_;
+  const od::EntryRef* ref_ = nullptr;  ///< the entry of the download begun
   bool open_ = false;
   bool streamed_ = false;
   size_t indicated_ = kSizeNotIndicated;
