@@ -103,9 +103,11 @@ void SdoServer::process(Microseconds now) noexcept {
 }
 
 bool SdoServer::isClientAbort(const uint8_t* request) const noexcept {
-  // Inside a block download, 0x81..0x9F are last segments with sequence numbers 1..31.
-  return state_ == State::kBlockDownload ? request[0] == kAbortRequest
-                                         : (request[0] >> 5U) == kCcsAbort;
+  // Inside a block download, 0x81..0x9F are last segments with sequence numbers 1..31. (Without
+  // block transfers, the server is never in that state.)
+  return features::kSdoBlockTransfer && state_ == State::kBlockDownload
+             ? request[0] == kAbortRequest
+             : (request[0] >> 5U) == kCcsAbort;
 }
 
 bool SdoServer::locateDownload(const uint8_t* request) noexcept {
