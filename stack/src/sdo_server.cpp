@@ -157,14 +157,12 @@ void SdoServer::initiateSegmentedDownload(const uint8_t* request, Microseconds n
   }
   const AbortCode begun =
       writer_.begin(ref_, sizeIndicated ? indicatedSize(loadU32(request + 4)) : kSizeNotIndicated);
-  if (begun != AbortCode::kNone) {
-    refuse(begun);
-    return;
+  if (begun == AbortCode::kNone) {
+    state_ = State::kDownloadSegments;
+    toggleBit_ = 0;
+    armTimeout(now);
   }
-  state_ = State::kDownloadSegments;
-  toggleBit_ = 0;
-  armTimeout(now);
-  answer(kScsInitiateDownloadResponse);
+  answerDownload(begun);
 }
 
 void SdoServer::downloadByCountAlone(const uint8_t* request) noexcept {
@@ -178,6 +176,10 @@ void SdoServer::finishExpedited(const uint8_t* request, AbortCode verdict) noexc
     // More bytes than the number has: little-endian, its low bytes come first.
     verdict = writer_.writeWhole(ref_, request + 4, ref_.size());
   }
+  answerDownload(verdict);
+}
+
+void SdoServer::answerDownload(AbortCode verdict) noexcept {
   if (verdict != AbortCode::kNone) {
     refuse(verdict);
     return;

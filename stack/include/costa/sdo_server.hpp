@@ -113,6 +113,8 @@ class SdoServer {
   /// as too long is written again as its low bytes (SdoProfile::expeditedKeepsLowBytes); then
   /// the response or the abort.
   void finishExpedited(const uint8_t* request, AbortCode verdict) noexcept;
+  /// The initiate download response, or the abort of the request when `verdict` is one.
+  void answerDownload(AbortCode verdict) noexcept;
   void downloadSegment(const uint8_t* request, Microseconds now) noexcept;
   /// An initiate upload request while no transfer runs.
   void initiateUpload(const uint8_t* request, Microseconds now) noexcept;
