@@ -97,7 +97,7 @@ void SdoServer::process(Microseconds now) noexcept {
   }
   if constexpr (features::kSdoBlockTransfer) {
     if (blockSegmentsReady()) {
-      queueBlockSegments(now);
+      queueBlockSegments();
     }
   }
 }
@@ -121,9 +121,9 @@ bool SdoServer::locateDownload(const uint8_t* request) noexcept {
   return true;
 }
 
-void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexcept {
+void SdoServer::initiateDownload(const uint8_t* request) noexcept {
   if ((request[0] & 0x02U) == 0U) {
-    initiateSegmentedDownload(request, now);
+    initiateSegmentedDownload(request);
     return;
   }
   if (!locateDownload(request)) {
@@ -146,7 +146,7 @@ void SdoServer::initiateDownload(const uint8_t* request, Microseconds now) noexc
   channel_.send(response);
 }
 
-void SdoServer::initiateSegmentedDownload(const uint8_t* request, Microseconds now) noexcept {
+void SdoServer::initiateSegmentedDownload(const uint8_t* request) noexcept {
   if (!locateDownload(request)) {
     return;
   }
@@ -160,7 +160,7 @@ void SdoServer::initiateSegmentedDownload(const uint8_t* request, Microseconds n
   if (begun == AbortCode::kNone) {
     state_ = State::kDownloadSegments;
     toggleBit_ = 0;
-    armTimeout(now);
+    armTimeout();
   }
   answerDownload(begun);
 }
@@ -215,26 +215,26 @@ void SdoServer::serve(const uint8_t* request, Microseconds now) noexcept {
   // of its own, so that this dispatch needs no stack frame: a segment does not pay for what an
   // initiate needs.
   if (state_ == State::kIdle && ccs == kCcsInitiateUpload) {
-    initiateUpload(request, now);
+    initiateUpload(request);
   } else if (state_ == State::kIdle && ccs == kCcsInitiateDownload) {
-    initiateDownload(request, now);
+    initiateDownload(request);
   } else if (state_ == State::kUploadSegments && ccs == kCcsUploadSegment) {
-    uploadSegment(request, now);
+    uploadSegment(request);
   } else {
-    onOtherRequest(request, ccs, now);
+    onOtherRequest(request, ccs);
   }
 }
 
-void SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept {
+void SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs) noexcept {
   if (isClientAbort(request)) {
     endTransfer(static_cast<AbortCode>(loadU32(request + 4)));
     return;
   }
   switch (state_) {
-    case State::kIdle: initiate(request, ccs, now); break;
+    case State::kIdle: initiate(request, ccs); break;
     case State::kDownloadSegments:
       if (ccs == kCcsDownloadSegment) {
-        downloadSegment(request, now);
+        downloadSegment(request);
       } else {
         abortTransfer(AbortCode::kCommandSpecifier);
       }
@@ -243,20 +243,20 @@ void SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds
     case State::kBlockDownload:
     case State::kBlockUpload:
       if constexpr (features::kSdoBlockTransfer) {
-        continueBlock(request, now);
+        continueBlock(request);
       }
       break;
   }
 }
 
-void SdoServer::initiate(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept {
+void SdoServer::initiate(const uint8_t* request, uint8_t ccs) noexcept {
   if constexpr (features::kSdoBlockTransfer) {
     if (ccs == kCcsBlockDownload) {
-      initiateBlockDownload(request, now);
+      initiateBlockDownload(request);
       return;
     }
     if (ccs == kCcsBlockUpload) {
-      initiateBlockUpload(request, now);
+      initiateBlockUpload(request);
       return;
     }
   }  // without block transfers, their requests are unknown command specifiers (below)
@@ -267,7 +267,7 @@ void SdoServer::initiate(const uint8_t* request, uint8_t ccs, Microseconds now) 
   }
 }
 
-void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexcept {
+void SdoServer::downloadSegment(const uint8_t* request) noexcept {
   if ((request[0] & kToggleBit) != toggleBit_) {
     abortTransfer(AbortCode::kToggleBit);
     return;
@@ -288,7 +288,7 @@ void SdoServer::downloadSegment(const uint8_t* request, Microseconds now) noexce
     endTransfer(AbortCode::kNone);
   } else {
     toggleBit_ ^= kToggleBit;
-    extendTimeout(now);
+    extendTimeout();
   }
 }
 

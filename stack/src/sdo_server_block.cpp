@@ -24,11 +24,11 @@ bool SdoServer::blockTransferValid() const noexcept {
   return state_ == State::kBlockUpload && !blockUpload_.finished() && blockUpload_.valid();
 }
 
-void SdoServer::queueBlockSegments(Microseconds now) noexcept {
-  afterBlockStep(blockUpload_.pump(), false, now);
+void SdoServer::queueBlockSegments() noexcept {
+  afterBlockStep(blockUpload_.pump(), false);
 }
 
-void SdoServer::initiateBlockDownload(const uint8_t* request, Microseconds now) noexcept {
+void SdoServer::initiateBlockDownload(const uint8_t* request) noexcept {
   if ((request[0] & kDownloadSubcommand) != 0U) {  // the end of a transfer that is not running
     sendAbort(0, 0, AbortCode::kCommandSpecifier);
     return;
@@ -44,10 +44,10 @@ void SdoServer::initiateBlockDownload(const uint8_t* request, Microseconds now) 
     return;
   }
   state_ = State::kBlockDownload;
-  armTimeout(now);
+  armTimeout();
 }
 
-void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) noexcept {
+void SdoServer::initiateBlockUpload(const uint8_t* request) noexcept {
   if ((request[0] & kUploadSubcommand) != 0U) {  // a step of a transfer that is not running
     sendAbort(0, 0, AbortCode::kCommandSpecifier);
     return;
@@ -71,37 +71,37 @@ void SdoServer::initiateBlockUpload(const uint8_t* request, Microseconds now) no
   }
   const uint8_t threshold = request[kProtocolSwitchByte];
   if (threshold != 0U && size <= threshold) {
-    answerUpload(size, now);  // expedited or segmented instead
+    answerUpload(size);  // expedited or segmented instead
     return;
   }
   blockUpload_.start(request, size);
   state_ = State::kBlockUpload;
-  armTimeout(now);
+  armTimeout();
   if (blockSegmentsReady()) {
-    clock_.schedule(atOnce(now));
+    clock_.schedule(atOnce(lastCall_));
   }
 }
 
-void SdoServer::continueBlock(const uint8_t* request, Microseconds now) noexcept {
+void SdoServer::continueBlock(const uint8_t* request) noexcept {
   if (state_ == State::kBlockDownload) {
     const AbortCode result = blockDownload_.onRequest(request);
-    afterBlockStep(result, blockDownload_.finished(), now);
+    afterBlockStep(result, blockDownload_.finished());
   } else {
     const AbortCode result = blockUpload_.onRequest(request);
-    afterBlockStep(result, blockUpload_.finished(), now);
+    afterBlockStep(result, blockUpload_.finished());
   }
   if (blockSegmentsReady()) {
-    clock_.schedule(atOnce(now));  // a sub-block to send
+    clock_.schedule(atOnce(lastCall_));  // a sub-block to send
   }
 }
 
-void SdoServer::afterBlockStep(AbortCode result, bool finished, Microseconds now) noexcept {
+void SdoServer::afterBlockStep(AbortCode result, bool finished) noexcept {
   if (result != AbortCode::kNone) {
     abortTransfer(result);
   } else if (finished) {
     endTransfer(AbortCode::kNone);
   } else {
-    armTimeout(now);
+    armTimeout();
   }
 }
 

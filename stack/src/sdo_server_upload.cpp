@@ -17,7 +17,7 @@ uint8_t segmentHeader(uint8_t toggleBit, size_t count, bool last) noexcept {
 
 }  // namespace
 
-void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcept {
+void SdoServer::initiateUpload(const uint8_t* request) noexcept {
   index_ = loadU16(request + 1);
   subIndex_ = request[3];
   ReadRequest details;
@@ -39,7 +39,7 @@ void SdoServer::initiateUpload(const uint8_t* request, Microseconds now) noexcep
     refuse(begun);
     return;
   }
-  answerUpload(size, now);
+  answerUpload(size);
 }
 
 COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcept {
@@ -55,7 +55,7 @@ COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcep
   channel_.send(response);
 }
 
-void SdoServer::answerUpload(size_t size, Microseconds now) noexcept {
+void SdoServer::answerUpload(size_t size) noexcept {
   if (size >= 1U && size <= 4U) {
     uint8_t value[4] = {};  // a value of fewer than 4 bytes is followed by zeros
     const AbortCode read = reader_.read(0, value, size);
@@ -73,14 +73,14 @@ void SdoServer::answerUpload(size_t size, Microseconds now) noexcept {
   done_ = 0;
   toggleBit_ = 0;
   state_ = State::kUploadSegments;
-  armTimeout(now);
+  armTimeout();
   answer(kScsInitiateUploadResponse | 0x01U, static_cast<uint32_t>(size));
 }
 
-void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept {
+void SdoServer::uploadSegment(const uint8_t* request) noexcept {
   // Built for size, every segment takes the one general path.
   if (!kExpandFastPaths || (request[0] & kToggleBit) != toggleBit_ || !reader_.padded()) {
-    uploadOtherSegment(request, now);
+    uploadOtherSegment(request);
     return;
   }
   CanFrame response;
@@ -93,7 +93,7 @@ void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept
     response.data[0] = toggleBit_;  // 7 bytes, more to come
     done_ += kSegmentBytes;
     toggleBit_ ^= kToggleBit;
-    extendTimeout(now);
+    extendTimeout();
   } else {
     response.data[0] = segmentHeader(toggleBit_, remaining, true);
     done_ = size_;
@@ -102,7 +102,7 @@ void SdoServer::uploadSegment(const uint8_t* request, Microseconds now) noexcept
   channel_.send(response);
 }
 
-void SdoServer::uploadOtherSegment(const uint8_t* request, Microseconds now) noexcept {
+void SdoServer::uploadOtherSegment(const uint8_t* request) noexcept {
   if ((request[0] & kToggleBit) != toggleBit_) {
     abortTransfer(AbortCode::kToggleBit);
     return;
@@ -124,7 +124,7 @@ void SdoServer::uploadOtherSegment(const uint8_t* request, Microseconds now) noe
     endTransfer(AbortCode::kNone);
   } else {
     toggleBit_ ^= kToggleBit;
-    extendTimeout(now);
+    extendTimeout();
   }
 }
 

@@ -79,33 +79,34 @@ class SdoServer {
 
   /// A request other than the frequent ones: aborts, download segments, block transfers, and
   /// requests that do not fit the transfer's state.
-  void onOtherRequest(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
-  /// The deadline of the client's next request, from `now`; the node's clock is told.
-  void armTimeout(Microseconds now) noexcept {
-    deadline_ = at(now, timeout_);
+  void onOtherRequest(const uint8_t* request, uint8_t ccs) noexcept;
+  /// The deadline of the client's next request, from now (lastCall_: every request, every
+  /// process() sets it first, so the handlers need no `now` of their own); the node's clock is
+  /// told.
+  void armTimeout() noexcept {
+    deadline_ = at(lastCall_, timeout_);
     clock_.schedule(deadline_);
   }
-  /// armTimeout() within a transfer whose start armed it. `now` does not go back, so the
+  /// armTimeout() within a transfer whose start armed it. Time does not go back, so the
   /// deadline moves only later; the clock's next time is no later than deadline_ from that
   /// armTimeout() on (schedule() then, and every process() that reaches it sets it from
   /// nextDeadline()), so it need not be told again.
-  void extendTimeout(Microseconds now) noexcept { deadline_ = at(now, timeout_); }
+  void extendTimeout() noexcept { deadline_ = at(lastCall_, timeout_); }
   /// A request while no transfer runs: starts one, or aborts.
-  void initiate(const uint8_t* request, uint8_t ccs, Microseconds now) noexcept;
+  void initiate(const uint8_t* request, uint8_t ccs) noexcept;
   /// A request shorter than 8 bytes, or an RTR frame: served as 8 bytes, the missing ones 0,
   /// when the profile serves its length (SdoProfile::shortestRequest: onRequest() once more,
   /// with 8 bytes), else ignored (false).
   [[gnu::noinline]] bool onShortRequest(const CanFrame& frame, Microseconds now) noexcept;
   /// An initiate download request while no transfer runs.
-  void initiateDownload(const uint8_t* request, Microseconds now) noexcept;
+  void initiateDownload(const uint8_t* request) noexcept;
   /// Locates the entry of an initiate download request (index_, subIndex_, ref_); false after
   /// the abort when it cannot be written.
   COSTA_HOT_INLINE bool locateDownload(const uint8_t* request) noexcept;
   /// initiateDownload() of a located entry, not expedited: a segmented download begins (or,
   /// for some devices, an expedited one by its byte count alone). Out of line: the expedited
   /// download keeps fewer registers.
-  [[gnu::noinline]] void initiateSegmentedDownload(const uint8_t* request,
-                                                   Microseconds now) noexcept;
+  [[gnu::noinline]] void initiateSegmentedDownload(const uint8_t* request) noexcept;
   /// A byte count without e and s: an expedited download of that count, for a device that
   /// reads the count alone (SdoProfile::expeditedByCountAlone).
   [[gnu::noinline]] void downloadByCountAlone(const uint8_t* request) noexcept;
@@ -115,30 +116,30 @@ class SdoServer {
   void finishExpedited(const uint8_t* request, AbortCode verdict) noexcept;
   /// The initiate download response, or the abort of the request when `verdict` is one.
   void answerDownload(AbortCode verdict) noexcept;
-  void downloadSegment(const uint8_t* request, Microseconds now) noexcept;
+  void downloadSegment(const uint8_t* request) noexcept;
   /// An initiate upload request while no transfer runs.
-  void initiateUpload(const uint8_t* request, Microseconds now) noexcept;
+  void initiateUpload(const uint8_t* request) noexcept;
   /// The initiate upload response, expedited or segmented, for a value the reader has begun.
-  void answerUpload(size_t size, Microseconds now) noexcept;
+  void answerUpload(size_t size) noexcept;
   /// The expedited answer to an upload of a numeric value of up to 4 bytes.
   COSTA_HOT_INLINE void answerExpedited(const uint8_t* request) noexcept;
   /// The next segment of an upload. Itself only the usual segment: seven bytes of a snapshot
   /// followed by zeros (SdoValueReader::padded()).
-  void uploadSegment(const uint8_t* request, Microseconds now) noexcept;
+  void uploadSegment(const uint8_t* request) noexcept;
   /// uploadSegment() for the others: a streamed value's segment (or one of a value that fills
   /// the buffer), a wrong toggle bit.
-  [[gnu::noinline]] void uploadOtherSegment(const uint8_t* request, Microseconds now) noexcept;
+  [[gnu::noinline]] void uploadOtherSegment(const uint8_t* request) noexcept;
   bool isClientAbort(const uint8_t* request) const noexcept;
   // Block transfers (sdo_server_block.cpp, compiled only with features::kSdoBlockTransfer).
   /// A block upload sub-block has segments to queue and the transmit queue has room for them.
   bool blockSegmentsReady() const noexcept;
   /// valid() for a running block transfer.
   bool blockTransferValid() const noexcept;
-  void queueBlockSegments(Microseconds now) noexcept;
-  void initiateBlockDownload(const uint8_t* request, Microseconds now) noexcept;
-  void initiateBlockUpload(const uint8_t* request, Microseconds now) noexcept;
-  void continueBlock(const uint8_t* request, Microseconds now) noexcept;
-  void afterBlockStep(AbortCode result, bool finished, Microseconds now) noexcept;
+  void queueBlockSegments() noexcept;
+  void initiateBlockDownload(const uint8_t* request) noexcept;
+  void initiateBlockUpload(const uint8_t* request) noexcept;
+  void continueBlock(const uint8_t* request) noexcept;
+  void afterBlockStep(AbortCode result, bool finished) noexcept;
 
   void sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept;
   /// The response to the request of the transfer (index_, subIndex_): `command`, the
