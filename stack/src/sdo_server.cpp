@@ -122,11 +122,11 @@ bool SdoServer::locateDownload(const uint8_t* request) noexcept {
 }
 
 void SdoServer::initiateDownload(const uint8_t* request) noexcept {
-  if ((request[0] & 0x02U) == 0U) {
-    initiateSegmentedDownload(request);
+  if (!locateDownload(request)) {  // (one locate for both kinds: expanded once)
     return;
   }
-  if (!locateDownload(request)) {
+  if ((request[0] & 0x02U) == 0U) {
+    initiateSegmentedDownload(request);
     return;
   }
   // Expedited: the value is in bytes 4..7; s = 1 gives its length, else the entry does.
@@ -147,9 +147,6 @@ void SdoServer::initiateDownload(const uint8_t* request) noexcept {
 }
 
 void SdoServer::initiateSegmentedDownload(const uint8_t* request) noexcept {
-  if (!locateDownload(request)) {
-    return;
-  }
   const bool sizeIndicated = (request[0] & 0x01U) != 0U;
   if (!sizeIndicated && (request[0] & 0x0CU) != 0U && profile_.expeditedByCountAlone) {
     downloadByCountAlone(request);
