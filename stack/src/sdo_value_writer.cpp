@@ -8,15 +8,12 @@ namespace {
 
 // Early verdict on the indicated size of a buffered download.
 AbortCode checkIndicatedSize(const od::EntryRef& ref, size_t size, size_t bufferSize) {
-  if (od::isNumeric(ref.type()) || ref.type() == od::DataType::kOctetString) {
-    if (size > ref.size()) {
-      return AbortCode::kLengthTooHigh;
-    }
-    if (size < ref.size()) {
-      return AbortCode::kLengthTooLow;
-    }
-  } else if (ref.type() == od::DataType::kVisibleString && size > ref.size()) {
+  const bool fixedSize = od::isNumeric(ref.type()) || ref.type() == od::DataType::kOctetString;
+  if ((fixedSize || ref.type() == od::DataType::kVisibleString) && size > ref.size()) {
     return AbortCode::kLengthTooHigh;
+  }
+  if (fixedSize && size < ref.size()) {
+    return AbortCode::kLengthTooLow;
   }
   return size > bufferSize ? AbortCode::kOutOfMemory : AbortCode::kNone;
 }
@@ -61,8 +58,9 @@ AbortCode SdoValueWriter::append(const uint8_t* data, size_t length) noexcept {
   }
   // A buffered value must fit the buffer; a streamed one goes to its hook a bufferful at a time.
   // (After a refusal the transfer ends: what was copied of the refused bytes is never used.)
+  size_t held = received_ - flushed_;  // bytes in the buffer
   while (length > 0U) {
-    if (received_ - flushed_ == bufferSize_) {
+    if (held == bufferSize_) {
       if (!streamed_) {
         return AbortCode::kLengthTooHigh;
       }
@@ -70,10 +68,12 @@ AbortCode SdoValueWriter::append(const uint8_t* data, size_t length) noexcept {
       if (flushed != AbortCode::kNone) {
         return flushed;
       }
+      held = 0;
     }
-    const size_t space = bufferSize_ - (received_ - flushed_);
+    const size_t space = bufferSize_ - held;
     const size_t count = length < space ? length : space;
-    copyBytes(buffer_ + (received_ - flushed_), data, count);
+    copyBytes(buffer_ + held, data, count);
+    held += count;
     received_ += count;
     data += count;
     length -= count;
