@@ -281,12 +281,7 @@ void SdoServer::downloadSegment(const uint8_t* request) noexcept {
   }
   // Every segment's response, the last one's too: nothing but the toggle of the segment.
   channel_.send(static_cast<uint8_t>(kScsDownloadSegmentResponse | toggleBit_), 0, 0, 0);
-  if (last) {
-    endTransfer(AbortCode::kNone);
-  } else {
-    toggleBit_ ^= kToggleBit;
-    extendTimeout();
-  }
+  afterSegment(last);
 }
 
 void SdoServer::refuse(AbortCode code) noexcept {

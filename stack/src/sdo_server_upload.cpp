@@ -120,12 +120,7 @@ void SdoServer::uploadOtherSegment(const uint8_t* request) noexcept {
   }
   done_ += count;
   channel_.send(response);
-  if (last) {
-    endTransfer(AbortCode::kNone);
-  } else {
-    toggleBit_ ^= kToggleBit;
-    extendTimeout();
-  }
+  afterSegment(last);
 }
 
 }  // namespace costa

@@ -117,6 +117,8 @@ class SdoServer {
   /// The initiate download response, or the abort of the request when `verdict` is one.
   void answerDownload(AbortCode verdict) noexcept;
   void downloadSegment(const uint8_t* request) noexcept;
+  /// After a segment's response: the transfer ends with the `last` segment, else waits for the
+  /// next one, of the other toggle.
   /// An initiate upload request while no transfer runs.
   void initiateUpload(const uint8_t* request) noexcept;
   /// The initiate upload response, expedited or segmented, for a value the reader has begun.
@@ -158,6 +160,16 @@ class SdoServer {
     writer_.cancel(reason);
     state_ = State::kIdle;
     deadline_ = kNever;
+  }
+  /// After a segment's response: the transfer ends with the `last` segment, else waits for the
+  /// next one, of the other toggle.
+  COSTA_SHARED_INLINE void afterSegment(bool last) noexcept {
+    if (last) {
+      endTransfer(AbortCode::kNone);
+    } else {
+      toggleBit_ ^= kToggleBit;
+      extendTimeout();
+    }
   }
 
   // The channel first, then the small fields: the channel's address is the server's own, which
