@@ -216,7 +216,11 @@ void SdoServer::serve(const uint8_t* request, Microseconds now) noexcept {
   } else if (state_ == State::kIdle && ccs == kCcsInitiateDownload) {
     initiateDownload(request);
   } else if (state_ == State::kUploadSegments && ccs == kCcsUploadSegment) {
-    uploadSegment(request);
+    if constexpr (kExpandFastPaths) {
+      uploadPaddedSegment(request);
+    } else {
+      uploadSegment(request);  // built for size, every segment takes the one general path
+    }
   } else {
     onOtherRequest(request, ccs);
   }

@@ -77,10 +77,9 @@ void SdoServer::answerUpload(size_t size) noexcept {
   answer(kScsInitiateUploadResponse | 0x01U, static_cast<uint32_t>(size));
 }
 
-void SdoServer::uploadSegment(const uint8_t* request) noexcept {
-  // Built for size, every segment takes the one general path.
-  if (!kExpandFastPaths || (request[0] & kToggleBit) != toggleBit_ || !reader_.padded()) {
-    uploadOtherSegment(request);
+void SdoServer::uploadPaddedSegment(const uint8_t* request) noexcept {
+  if ((request[0] & kToggleBit) != toggleBit_ || !reader_.padded()) {
+    uploadSegment(request);
     return;
   }
   CanFrame response;
@@ -102,7 +101,7 @@ void SdoServer::uploadSegment(const uint8_t* request) noexcept {
   channel_.send(response);
 }
 
-void SdoServer::uploadOtherSegment(const uint8_t* request) noexcept {
+void SdoServer::uploadSegment(const uint8_t* request) noexcept {
   if ((request[0] & kToggleBit) != toggleBit_) {
     abortTransfer(AbortCode::kToggleBit);
     return;

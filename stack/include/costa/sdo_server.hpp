@@ -125,12 +125,12 @@ class SdoServer {
   void answerUpload(size_t size) noexcept;
   /// The expedited answer to an upload of a numeric value of up to 4 bytes.
   COSTA_HOT_INLINE void answerExpedited(const uint8_t* request) noexcept;
-  /// The next segment of an upload. Itself only the usual segment: seven bytes of a snapshot
-  /// followed by zeros (SdoValueReader::padded()).
-  void uploadSegment(const uint8_t* request) noexcept;
-  /// uploadSegment() for the others: a streamed value's segment (or one of a value that fills
-  /// the buffer), a wrong toggle bit.
-  [[gnu::noinline]] void uploadOtherSegment(const uint8_t* request) noexcept;
+  /// The next segment of an upload, built for speed. Itself only the usual segment: seven bytes
+  /// of a snapshot followed by zeros (SdoValueReader::padded()); uploadSegment() the others.
+  void uploadPaddedSegment(const uint8_t* request) noexcept;
+  /// The next segment of an upload, any segment (built for size, every one): a streamed
+  /// value's segment, one of a value that fills the buffer, a wrong toggle bit.
+  [[gnu::noinline]] void uploadSegment(const uint8_t* request) noexcept;
   bool isClientAbort(const uint8_t* request) const noexcept;
   // Block transfers (sdo_server_block.cpp, compiled only with features::kSdoBlockTransfer).
   /// A block upload sub-block has segments to queue and the transmit queue has room for them.
