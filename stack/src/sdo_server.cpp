@@ -65,7 +65,8 @@ bool SdoServer::valid() const noexcept {
   }
   switch (state_) {
     case State::kDownloadSegments: return true;
-    case State::kUploadSegments: return done_ < size_ || (done_ == 0U && size_ == 0U);
+    case State::kUploadSegments:
+      return done_ < reader_.size() || (done_ == 0U && reader_.size() == 0U);
     case State::kBlockDownload:
     case State::kBlockUpload:
       if constexpr (features::kSdoBlockTransfer) {

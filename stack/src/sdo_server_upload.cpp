@@ -69,7 +69,6 @@ void SdoServer::answerUpload(size_t size) noexcept {
            loadU32(value));
     return;
   }
-  size_ = size;
   done_ = 0;
   toggleBit_ = 0;
   state_ = State::kUploadSegments;
@@ -87,7 +86,7 @@ void SdoServer::uploadPaddedSegment(const uint8_t* request) noexcept {
   // Seven bytes whatever the count: past the value's end, the zeros that follow the snapshot.
   static_assert(SdoValueReader::kZeroTail >= kSegmentBytes, "a whole segment past the end");
   copyBytes(response.data + 1, reader_.snapshot() + done_, kSegmentBytes);
-  const size_t remaining = size_ - done_;
+  const size_t remaining = reader_.size() - done_;
   if (remaining > kSegmentBytes) {
     response.data[0] = toggleBit_;  // 7 bytes, more to come
     done_ += kSegmentBytes;
@@ -95,7 +94,7 @@ void SdoServer::uploadPaddedSegment(const uint8_t* request) noexcept {
     extendTimeout();
   } else {
     response.data[0] = segmentHeader(toggleBit_, remaining, true);
-    done_ = size_;
+    done_ = reader_.size();
     endTransfer(AbortCode::kNone);
   }
   channel_.send(response);
@@ -106,7 +105,7 @@ void SdoServer::uploadSegment(const uint8_t* request) noexcept {
     abortTransfer(AbortCode::kToggleBit);
     return;
   }
-  const size_t remaining = size_ - done_;
+  const size_t remaining = reader_.size() - done_;
   const bool last = remaining <= kSegmentBytes;
   const size_t count = last ? remaining : kSegmentBytes;
   CanFrame response;

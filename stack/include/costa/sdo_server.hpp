@@ -181,8 +181,7 @@ class SdoServer {
   uint8_t toggleBit_ = 0;  ///< the toggle of the next segment, where it lies in byte 0: 0 or 0x10
   uint8_t subIndex_ = 0;
   uint16_t index_ = 0;
-  size_t size_ = 0;  ///< Total bytes of a segmented upload.
-  size_t done_ = 0;  ///< Bytes uploaded so far.
+  size_t done_ = 0;  ///< Bytes uploaded so far (of reader_.size()).
   Microseconds deadline_ = kNever;
   Microseconds lastCall_ = 0;  ///< `now` of the latest call.
   Microseconds timeout_;

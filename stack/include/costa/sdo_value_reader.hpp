@@ -56,6 +56,8 @@ class SdoValueReader {
   /// segments of up to 7 bytes may copy 7 bytes for each, the last one too. (Built for size,
   /// none: every segment is read by its length.)
   static constexpr size_t kZeroTail = 7;
+  /// The bytes of the value begun: its snapshot's, or the size the streaming hook gave.
+  size_t size() const noexcept { return size_; }
   /// The value is not streamed and kZeroTail zeros follow its snapshot.
   bool padded() const noexcept { return padded_; }
   /// The snapshot of a value that is not streamed: its bytes in the SDO buffer.
