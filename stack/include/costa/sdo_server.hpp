@@ -83,7 +83,7 @@ class SdoServer {
   /// The deadline of the client's next request, from now (lastCall_: every request, every
   /// process() sets it first, so the handlers need no `now` of their own); the node's clock is
   /// told.
-  void armTimeout() noexcept {
+  COSTA_SHARED_INLINE void armTimeout() noexcept {
     deadline_ = at(lastCall_, timeout_);
     clock_.schedule(deadline_);
   }
