@@ -146,7 +146,7 @@ class SdoServer {
   void sendAbort(uint16_t index, uint8_t subIndex, AbortCode code) noexcept;
   /// The response to the request of the transfer (index_, subIndex_): `command`, the
   /// multiplexer, `data` in bytes 4..7.
-  void answer(uint8_t command, uint32_t data = 0) noexcept {
+  COSTA_SHARED_INLINE void answer(uint8_t command, uint32_t data = 0) noexcept {
     channel_.send(command, index_, subIndex_, data);
   }
   /// The abort of the request of the transfer (index_, subIndex_), which leaves the state as it
