@@ -117,8 +117,6 @@ class SdoServer {
   /// The initiate download response, or the abort of the request when `verdict` is one.
   void answerDownload(AbortCode verdict) noexcept;
   void downloadSegment(const uint8_t* request) noexcept;
-  /// After a segment's response: the transfer ends with the `last` segment, else waits for the
-  /// next one, of the other toggle.
   /// An initiate upload request while no transfer runs.
   void initiateUpload(const uint8_t* request) noexcept;
   /// The initiate upload response, expedited or segmented, for a value the reader has begun.
