@@ -47,6 +47,10 @@ void SdoServer::initiateBlockDownload(const uint8_t* request) noexcept {
   armTimeout();
 }
 
+AbortCode SdoServer::prepareUpload(const ReadRequest& details) noexcept {
+  return access_.prepareRead(index_, subIndex_, details, &ref_);
+}
+
 void SdoServer::initiateBlockUpload(const uint8_t* request) noexcept {
   if ((request[0] & kUploadSubcommand) != 0U) {  // a step of a transfer that is not running
     sendAbort(0, 0, AbortCode::kCommandSpecifier);
@@ -60,7 +64,7 @@ void SdoServer::initiateBlockUpload(const uint8_t* request) noexcept {
     return;
   }
   // Bytes 4..7 carry blksize and pst here, not request data for the hook.
-  AbortCode begun = access_.prepareRead(index_, subIndex_, ReadRequest{}, &ref_);
+  AbortCode begun = prepareUpload(ReadRequest{});
   size_t size = 0;
   if (begun == AbortCode::kNone) {
     begun = reader_.begin(ref_, &size);

@@ -22,7 +22,12 @@ void SdoServer::initiateUpload(const uint8_t* request) noexcept {
   subIndex_ = request[3];
   ReadRequest details;
   copyBytes(details.requestData, request + 4, 4);
-  const AbortCode prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
+  AbortCode prepared = AbortCode::kNone;
+  if constexpr (features::kSdoBlockTransfer && !kExpandFastPaths) {
+    prepared = prepareUpload(details);  // the block upload's copy (sdo_server_block.cpp)
+  } else {
+    prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
+  }
   if (prepared != AbortCode::kNone) {
     refuse(prepared);
     return;
