@@ -47,8 +47,9 @@ void SdoServer::initiateBlockDownload(const uint8_t* request) noexcept {
   armTimeout();
 }
 
-AbortCode SdoServer::prepareUpload(const ReadRequest& details) noexcept {
-  return access_.prepareRead(index_, subIndex_, details, &ref_);
+AbortCode SdoServer::beginUpload(const ReadRequest& details, size_t* size) noexcept {
+  const AbortCode prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
+  return prepared != AbortCode::kNone ? prepared : reader_.begin(ref_, size);
 }
 
 void SdoServer::initiateBlockUpload(const uint8_t* request) noexcept {
@@ -64,11 +65,8 @@ void SdoServer::initiateBlockUpload(const uint8_t* request) noexcept {
     return;
   }
   // Bytes 4..7 carry blksize and pst here, not request data for the hook.
-  AbortCode begun = prepareUpload(ReadRequest{});
   size_t size = 0;
-  if (begun == AbortCode::kNone) {
-    begun = reader_.begin(ref_, &size);
-  }
+  const AbortCode begun = beginUpload(ReadRequest{}, &size);
   if (begun != AbortCode::kNone) {
     sendAbort(index_, subIndex_, begun);
     return;

@@ -22,29 +22,34 @@ void SdoServer::initiateUpload(const uint8_t* request) noexcept {
   subIndex_ = request[3];
   ReadRequest details;
   copyBytes(details.requestData, request + 4, 4);
-  AbortCode prepared = AbortCode::kNone;
   if constexpr (features::kSdoBlockTransfer && !kExpandFastPaths) {
-    prepared = prepareUpload(details);  // the block upload's copy (sdo_server_block.cpp)
+    size_t size = 0;
+    const AbortCode begun = beginUpload(details, &size);  // the block upload's copy
+    if (begun != AbortCode::kNone) {
+      refuse(begun);
+      return;
+    }
+    answerUpload(size);
   } else {
-    prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
+    const AbortCode prepared = access_.prepareRead(index_, subIndex_, details, &ref_);
+    if (prepared != AbortCode::kNone) {
+      refuse(prepared);
+      return;
+    }
+    // The usual read straight from the dictionary into the answer; built for size, every read
+    // takes the reader, which answers the same bytes.
+    if (kExpandFastPaths && od::isNumeric(ref_.type()) && ref_.size() <= 4U) {
+      answerExpedited(request);
+      return;
+    }
+    size_t size = 0;
+    const AbortCode begun = reader_.begin(ref_, &size);
+    if (begun != AbortCode::kNone) {
+      refuse(begun);
+      return;
+    }
+    answerUpload(size);
   }
-  if (prepared != AbortCode::kNone) {
-    refuse(prepared);
-    return;
-  }
-  // The usual read straight from the dictionary into the answer; built for size, every read
-  // takes the reader, which answers the same bytes.
-  if (kExpandFastPaths && od::isNumeric(ref_.type()) && ref_.size() <= 4U) {
-    answerExpedited(request);
-    return;
-  }
-  size_t size = 0;
-  const AbortCode begun = reader_.begin(ref_, &size);
-  if (begun != AbortCode::kNone) {
-    refuse(begun);
-    return;
-  }
-  answerUpload(size);
 }
 
 COSTA_HOT_INLINE void SdoServer::answerExpedited(const uint8_t* request) noexcept {

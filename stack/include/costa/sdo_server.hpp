@@ -119,11 +119,11 @@ class SdoServer {
   void downloadSegment(const uint8_t* request) noexcept;
   /// An initiate upload request while no transfer runs.
   void initiateUpload(const uint8_t* request) noexcept;
-  /// Locates the entry of an upload (index_, subIndex_) for reading, into ref_: the refusal, if
-  /// any. Built for size with block transfers, this one copy (sdo_server_block.cpp) of the
-  /// dictionary's and the hooks' checks serves the segmented and the block upload; else
-  /// initiateUpload() expands them.
-  [[gnu::noinline]] AbortCode prepareUpload(const ReadRequest& details) noexcept;
+  /// Locates the entry of an upload (index_, subIndex_) for reading, into ref_, and begins the
+  /// reader (`*size`): the refusal, if any. Built for size with block transfers, this one copy
+  /// (sdo_server_block.cpp) of the dictionary's and the hooks' checks and of the reader's start
+  /// serves the segmented and the block upload; else initiateUpload() expands them.
+  [[gnu::noinline]] AbortCode beginUpload(const ReadRequest& details, size_t* size) noexcept;
   /// The initiate upload response, expedited or segmented, for a value the reader has begun.
   void answerUpload(size_t size) noexcept;
   /// The expedited answer to an upload of a numeric value of up to 4 bytes.
