@@ -40,7 +40,7 @@ void SdoServer::initiateBlockDownload(const uint8_t* request) noexcept {
     started = blockDownload_.start(ref_, request);
   }
   if (started != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, started);
+    refuse(started);
     return;
   }
   state_ = State::kBlockDownload;
@@ -61,14 +61,14 @@ void SdoServer::initiateBlockUpload(const uint8_t* request) noexcept {
   subIndex_ = request[3];
   const uint8_t blockSize = request[kBlockSizeByte];
   if (blockSize < 1U || blockSize > SdoBlockUpload::kMaxBlockSize) {
-    sendAbort(index_, subIndex_, AbortCode::kBlockSize);
+    refuse(AbortCode::kBlockSize);
     return;
   }
   // Bytes 4..7 carry blksize and pst here, not request data for the hook.
   size_t size = 0;
   const AbortCode begun = beginUpload(ReadRequest{}, &size);
   if (begun != AbortCode::kNone) {
-    sendAbort(index_, subIndex_, begun);
+    refuse(begun);
     return;
   }
   const uint8_t threshold = request[kProtocolSwitchByte];
