@@ -39,16 +39,16 @@ AbortCode SdoValueWriter::begin(const od::EntryRef& ref, size_t indicatedSize) n
     const AbortCode sized = indicatedSize == kSizeNotIndicated
                                 ? AbortCode::kNone
                                 : checkIndicatedSize(ref, indicatedSize, bufferSize_);
-    open_ = sized == AbortCode::kNone;
+    streamOpen_ = false;
     return sized;
   }
   const AbortCode started = access_.writeStream(ref, 0, buffer_, 0, false, indicatedSize);
   if (started != AbortCode::kNone) {
     access_.abortWriteStream(ref, started);
-    open_ = false;
+    streamOpen_ = false;
     return started;
   }
-  open_ = true;
+  streamOpen_ = true;
   return AbortCode::kNone;
 }
 
@@ -97,7 +97,7 @@ AbortCode SdoValueWriter::finish() noexcept {
   }
   const AbortCode written = streamed_ ? flush(true) : access_.write(*ref_, buffer_, received_);
   if (written == AbortCode::kNone) {
-    open_ = false;
+    streamOpen_ = false;
   }
   return written;
 }

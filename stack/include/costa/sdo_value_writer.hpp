@@ -48,10 +48,10 @@ class SdoValueWriter {
   /// Ends an unfinished download: a streaming hook is told to discard. No-op when none is open
   /// (the usual case: every transfer's end cancels, the end of an upload too).
   void cancel(AbortCode reason) noexcept {
-    if (open_ && streamed_) {
+    if (streamOpen_) {
       access_.abortWriteStream(*ref_, reason);
     }
-    open_ = false;
+    streamOpen_ = false;
   }
 
   /// Bytes received so far.
@@ -68,7 +68,7 @@ class SdoValueWriter {
   uint8_t* buffer_;
   size_t bufferSize_;
   const od::EntryRef* ref_ = nullptr;  ///< the entry of the download begun
-  bool open_ = false;
+  bool streamOpen_ = false;  ///< a streamed download begun, not finished: cancel() tells its hook
   bool streamed_ = false;
   size_t indicated_ = kSizeNotIndicated;
   size_t received_ = 0;  ///< Bytes appended.
