@@ -116,6 +116,7 @@ class EmcyProducer : public ObjectHook {
   void publishRegister() noexcept;
   uint32_t cobId() const noexcept;
 
+  uint8_t nodeId_ = 0;  // (first: within reach of Thumb-1's short offsets for a byte)
   od::ObjectDictionary& dictionary_;
   const EmcyProfile& profile_;
   NodeClock& clock_;
@@ -128,7 +129,6 @@ class EmcyProducer : public ObjectHook {
   size_t pendingCount_ = 0;
   uint32_t lost_ = 0;
   uint32_t conditionsFull_ = 0;
-  uint8_t nodeId_ = 0;
   Microseconds nextAllowed_ = kNever;  ///< end of the inhibit time of the last EMCY sent
 };
 

@@ -110,12 +110,13 @@ class FrameRouter {
   RouteEntry* slots_;
   size_t capacity_;
   size_t count_ = 0;
+  // (the flags before the index, within reach of Thumb-1's short offsets: every frame reads them)
+  bool stale_ = true;
+  bool shared_ = false;  ///< some CAN-ID has more than one route
   /// first_[c]: the index of the first route of function code c; first_[16] = count_.
   uint8_t first_[kFunctionCodes + 1U] = {};
   uint32_t changes_ = 0;
   uint32_t fastId_ = kNoFastId;
-  bool stale_ = true;
-  bool shared_ = false;  ///< some CAN-ID has more than one route
 };
 
 }  // namespace costa

@@ -73,10 +73,10 @@ class NmtStateMachine {
   };
 
   NmtStateMachine(const Services& services, uint8_t nodeId) noexcept
-      : services_(services),
-        nodeId_(nodeId),
+      : nodeId_(nodeId),
         pendingNodeId_(nodeId),
-        automaticStart_(services.settings.automaticStart) {}
+        automaticStart_(services.settings.automaticStart),
+        services_(services) {}
 
   NmtState state() const noexcept { return state_; }
   /// The node-id in use (1..127), or 0xFF: none yet.
@@ -110,13 +110,15 @@ class NmtStateMachine {
   void setState(NmtState state) noexcept;
   LssIdentity identity() const noexcept;
 
-  Services services_;
+  // The small fields first, within reach of Thumb-1's short offsets (the state is read on
+  // every frame).
   NmtState state_ = NmtState::kInitialising;
   uint8_t nodeId_;
   uint8_t pendingNodeId_;
   bool powerOn_ = false;
   bool automaticStart_;
   bool startPending_ = false;
+  Services services_;
 };
 
 }  // namespace costa

@@ -125,7 +125,8 @@ class PdoMap {
   bool inRom(size_t slot) const noexcept { return (markMask_ & (1U << slot)) != 0U; }
   od::EntryRef locate(const ObjectAccess& access, size_t slot) const noexcept;
 
-  Slot slots_[kMaxEntries] = {};
+  // The four bytes first, within reach of Thumb-1's short offsets from the channel that holds
+  // the map.
   uint8_t count_ = 0;
   uint8_t bytes_ = 0;
   uint8_t accessMask_ = 0;  ///< bit i: slot i goes through ObjectAccess
@@ -133,6 +134,7 @@ class PdoMap {
   /// (inRom()). A map has one direction (RPDOs map no constants, TPDOs no dummy entries), so
   /// one byte serves both and the map stays 36 bytes.
   uint8_t markMask_ = 0;
+  Slot slots_[kMaxEntries] = {};
 };
 
 }  // namespace costa

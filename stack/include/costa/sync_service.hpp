@@ -78,19 +78,20 @@ class SyncService : public ObjectHook {
     return true;
   }
 
+  // The bytes first, within reach of Thumb-1's short offsets.
+  uint8_t overflow_ = 0;
+  uint8_t counter_ = 0;  ///< producer's next counter value
+  bool producer_ = false;
+  bool lengthError_ = false;  ///< EMCY 0x8240 raised
   od::ObjectDictionary& dictionary_;
   TransmitPath& tx_;
   EmcyProducer& emcy_;
   NodeClock& clock_;
   FrameRouter& routes_;
   uint32_t canId_ = 0x080;
-  bool producer_ = false;
   uint32_t period_ = 0;  ///< µs, 0x1006
   uint32_t window_ = 0;  ///< µs, 0x1007 (at most kLongestDelay)
-  uint8_t overflow_ = 0;
-  uint8_t counter_ = 0;       ///< producer's next counter value
-  bool lengthError_ = false;  ///< EMCY 0x8240 raised
-  LongTimer timer_;           ///< the next SYNC this node produces
+  LongTimer timer_;      ///< the next SYNC this node produces
 };
 
 }  // namespace costa
