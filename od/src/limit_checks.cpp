@@ -1,6 +1,7 @@
-// The limit checks a Definition names (Definition::limitCheck), each in its own section, so
-// that a dictionary links only the one it names: none without limits, no floating-point code
-// without a REAL entry that has limits.
+// The limit checks a Definition names (Definition::limitCheck). Built with function sections and
+// linked with --gc-sections (as Costa's firmware toolchain files do), an image keeps only the
+// one its dictionary names: none without limits, no floating-point code without a REAL entry
+// that has limits.
 #include "costa/od/bytes.hpp"
 #include "costa/od/definition.hpp"
 #include "costa/od/little_endian.hpp"

@@ -30,7 +30,9 @@ bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
 void RpdoChannel::updateQuietDlc() noexcept {
   if constexpr (kExpandFastPaths) {  // (built for size, onFrame() does not look at it)
     // cppcheck-suppress knownConditionTrueFalse ; false in a build without quirk profiles
-    quietDlc_ = raised_ != 0U || answered() ? 0xFFU : static_cast<uint8_t>(map_.bytes());
+    quietDlc_ = raised(kTooShort) || raised(kTooLong) || answered()
+                    ? 0xFFU
+                    : static_cast<uint8_t>(map_.bytes());
   }
 }
 
@@ -52,6 +54,7 @@ void RpdoChannel::clearConditions(PdoContext& context) noexcept {
 void RpdoChannel::setCondition(PdoContext& context, Condition condition, bool on) noexcept {
   // By condition bit: 1, 2, 4 -> 0, 1, 2.
   constexpr uint16_t kCodes[] = {kEmcyLengthShort, kEmcyLengthLong, kEmcyTimeout};
+  static_assert(kTooShort == 1U && kTooLong == 2U && kTimedOut == 4U, "kCodes by bit >> 1");
   const uint16_t code = kCodes[condition >> 1U];
   if (on) {
     raised_ |= condition;

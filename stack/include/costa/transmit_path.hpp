@@ -47,8 +47,8 @@ class TransmitPath {
   }
 
   /// send() of the 11-bit data frame `id` carrying `length` (0..8) bytes of `data`, zeros after
-  /// them: the frame built in one place for the services that send a few bytes (heartbeat,
-  /// SYNC, EMCY).
+  /// them: the frame built in one place for the services whose frames are their data alone
+  /// (heartbeat and boot-up, node guarding, SYNC, EMCY, TIME, LSS).
   void send(uint32_t id, const uint8_t* data, uint8_t length) noexcept;
 
   /// Offers queued frames to the controller, oldest first, until it refuses one or a gate is

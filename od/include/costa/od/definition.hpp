@@ -134,7 +134,9 @@ struct Definition {
   uint32_t layoutId;       ///< Identifies the layout of the stored groups (for stored images).
   const char* deviceName;  ///< Name of the device description the tables were generated from.
   const Limits* limits;    ///< Rows named by SubEntry::limits (null when none has limits).
-  LimitCheck limitCheck;   ///< Null unless an entry has limits (then none are checked).
+  /// The check of the entries that have limits; null: limits are not checked (the generator
+  /// names one whenever an entry has limits).
+  LimitCheck limitCheck;
   /// Open-addressed hash table of the objects: 2^(32 - objectSlotShift) entries, each 0 (empty) or
   /// 1 + the object's position in `objects`; see objectSlotOf(). Null: lookups search the
   /// sorted `objects` instead (a definition made by hand; every generated one built for size,
