@@ -72,8 +72,10 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
     updateQuietDlc();
     return false;
   }
-  setCondition(context, kTooShort, false);
-  setCondition(context, kTooLong, dlc > bytes);
+  if (raised_ != 0U || dlc > bytes) {  // (the usual frame raises and clears nothing: no call)
+    setCondition(context, kTooShort, false);
+    setCondition(context, kTooLong, dlc > bytes);
+  }
   updateQuietDlc();
   // cppcheck-suppress knownConditionTrueFalse ; false in a build without quirk profiles
   if (answered()) {
