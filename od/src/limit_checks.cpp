@@ -4,6 +4,7 @@
 // that has limits.
 #include "costa/od/bytes.hpp"
 #include "costa/od/definition.hpp"
+#include "costa/od/integer_limits.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa::od {
@@ -39,21 +40,9 @@ AbortCode checkRealLimits(DataType type, uint64_t raw, const Limits& limits) noe
 
 AbortCode checkIntegerLimits(DataType type, const uint8_t* source, size_t size,
                              const Limits& limits) noexcept {
-  const uint64_t raw = loadLittleEndian(source, size);
-  if (isSigned(type)) {
-    const int64_t value = signExtend(raw, size);
-    if (value > static_cast<int64_t>(limits.high)) {
-      return AbortCode::kValueTooHigh;
-    }
-    return value < static_cast<int64_t>(limits.low) ? AbortCode::kValueTooLow : AbortCode::kNone;
-  }
-  if (isReal(type)) {
-    return AbortCode::kNone;  // (only checkLimits() checks REALs)
-  }
-  if (raw > limits.high) {
-    return AbortCode::kValueTooHigh;
-  }
-  return raw < limits.low ? AbortCode::kValueTooLow : AbortCode::kNone;
+  // (only checkLimits() checks REALs)
+  return isReal(type) ? AbortCode::kNone
+                      : integerLimitsVerdict(type, size, loadLittleEndian(source, size), limits);
 }
 
 AbortCode checkLimits(DataType type, const uint8_t* source, size_t size,

@@ -1,6 +1,7 @@
 #include "costa/od/object_dictionary.hpp"
 
 #include "costa/od/bytes.hpp"
+#include "costa/od/integer_limits.hpp"
 #include "costa/od/little_endian.hpp"
 
 namespace costa::od {
@@ -215,8 +216,11 @@ AbortCode ObjectDictionary::check(const EntryRef& ref, const uint8_t* source,
   if (ref.row->limits == 0U || definition_->limitCheck == nullptr) {
     return AbortCode::kNone;
   }
-  return definition_->limitCheck(type, source, ref.size(),
-                                 definition_->limits[ref.row->limits - 1U]);
+  const Limits& limits = definition_->limits[ref.row->limits - 1U];
+  if (kExpandFastPaths && !isReal(type)) {  // where speed counts, integers without the call
+    return integerLimitsVerdict(type, ref.size(), loadLittleEndian(source, ref.size()), limits);
+  }
+  return definition_->limitCheck(type, source, ref.size(), limits);
 }
 
 AbortCode ObjectDictionary::writeChecked(const EntryRef& ref, const uint8_t* source,
