@@ -1,5 +1,6 @@
 // The byte-order helpers every value passes through: little-endian loads and stores of 1 to 8
-// bytes, native loads and stores, and sign extension from each width.
+// bytes, native loads and stores, sign extension from each width, and the node-id added to a
+// number.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -59,6 +60,36 @@ TEST(LittleEndian, SignExtendsFromEveryWidth) {
   EXPECT_EQ(signExtend(0x8000000000000000ULL, 8), INT64_MIN);
   EXPECT_EQ(signExtend(0x7FFFFFFFFFFFFFFFULL, 8), INT64_MAX);
   EXPECT_EQ(signExtend(0xFFFFFFFFFFFFFFFEULL, 9), -2);
+}
+
+TEST(LittleEndian, AddsANodeIdWithCarryWithinTheNumbersWidth) {
+  for (size_t length = 1; length <= 8; ++length) {
+    // Each byte 0xFF but the top one, 0x12: adding 1 carries through every byte below the top.
+    uint8_t bytes[9];
+    std::memset(bytes, 0xFF, sizeof(bytes));
+    bytes[length - 1U] = 0x12;
+    addLittleEndian(bytes, length, 1);
+    for (size_t i = 0; i + 1U < length; ++i) {
+      EXPECT_EQ(bytes[i], 0x00U) << length << " " << i;
+    }
+    EXPECT_EQ(bytes[length - 1U], 0x13U) << length;
+    EXPECT_EQ(bytes[length], 0xFFU) << length;  // nothing past the number
+    // All ones: the carry out of the top byte is dropped (the number's own width).
+    std::memset(bytes, 0xFF, sizeof(bytes));
+    addLittleEndian(bytes, length, 0x7F);
+    EXPECT_EQ(bytes[0], 0x7EU) << length;
+    for (size_t i = 1; i < length; ++i) {
+      EXPECT_EQ(bytes[i], 0x00U) << length << " " << i;
+    }
+    EXPECT_EQ(bytes[length], 0xFFU) << length;
+  }
+  uint8_t cobId[4] = {0x80, 0x05, 0x00, 0x00};  // 0x580 + node-id 0x7F
+  addLittleEndian(cobId, sizeof(cobId), 0x7F);
+  EXPECT_EQ(loadLittleEndianBytes(cobId, sizeof(cobId)), 0x5FFU);
+  addLittleEndian(cobId, sizeof(cobId), 0x01);
+  EXPECT_EQ(loadLittleEndianBytes(cobId, sizeof(cobId)), 0x600U);
+  addLittleEndian(cobId, sizeof(cobId), 0);
+  EXPECT_EQ(loadLittleEndianBytes(cobId, sizeof(cobId)), 0x600U);
 }
 
 }  // namespace

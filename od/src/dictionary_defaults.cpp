@@ -81,7 +81,7 @@ void ObjectDictionary::restoreDefault(const EntryRef& ref) noexcept {
   }
   copyDefault(*definition_, ref, value);
   if (ref.has(kNodeIdRelative)) {
-    storeNative(value, loadNative(value, ref.size()) + nodeId_, ref.size());
+    addNodeIdTo(value, ref.size());
   }
 }
 
@@ -103,7 +103,7 @@ void ObjectDictionary::addNodeId(const Object& object, const SubEntry& row) noex
   const size_t begin = valueOffset(object, row, 0);
   const size_t end = begin + row.count * storageBytes(row);
   for (size_t offset = begin; offset < end; offset += storageBytes(row)) {
-    storeNative(values_ + offset, loadNative(values_ + offset, row.size) + nodeId_, row.size);
+    addNodeIdTo(values_ + offset, row.size);
   }
 }
 

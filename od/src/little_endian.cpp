@@ -47,6 +47,15 @@ uint64_t loadLittleEndianBytes(const uint8_t* source, size_t length) noexcept {
   return (static_cast<uint64_t>(high) << 32U) | low;
 }
 
+void addLittleEndian(uint8_t* bytes, size_t length, uint8_t addend) noexcept {
+  uint32_t carry = addend;
+  for (size_t i = 0; i < length && carry != 0U; ++i) {
+    carry += bytes[i];
+    bytes[i] = static_cast<uint8_t>(carry);
+    carry >>= 8U;
+  }
+}
+
 int64_t signExtend(uint64_t raw, size_t length) noexcept {
   if (length == 0U) {
     return 0;

@@ -162,11 +162,16 @@ size_t ObjectDictionary::read(const EntryRef& ref, size_t offset, uint8_t* desti
   source += ref.offset();
   if (isNumeric(ref.type()) && (!kLittleEndianHost || nodeIdConstant(ref.attributes()))) {
     uint8_t wire[8];
-    uint64_t raw = loadNative(source, ref.size());
-    if (nodeIdConstant(ref.attributes())) {
-      raw += nodeId_;
+    if constexpr (kLittleEndianHost) {  // a `$NODEID` constant: its bytes plus the node-id
+      copyBytes(wire, source, ref.size());
+      addLittleEndian(wire, ref.size(), nodeId_);
+    } else {
+      uint64_t raw = loadNative(source, ref.size());
+      if (nodeIdConstant(ref.attributes())) {
+        raw += nodeId_;
+      }
+      storeLittleEndian(wire, raw, ref.size());
     }
-    storeLittleEndian(wire, raw, ref.size());
     copyBytes(destination, wire + offset, count);
   } else if (offset == 0U && count == ref.size() && isNumeric(ref.type())) {
     copyNumber(destination, source, count);  // the usual read: a whole number
@@ -245,17 +250,41 @@ AbortCode ObjectDictionary::writeChecked(const EntryRef& ref, const uint8_t* sou
   return AbortCode::kNone;
 }
 
-uint64_t ObjectDictionary::readUnsigned(const EntryRef& ref) const noexcept {
-  const DataType type = ref.type();
-  if (!isSigned(type) && !isUnsigned(type)) {
+uint32_t ObjectDictionary::readUnsigned32(const EntryRef& ref) const noexcept {
+  const uint32_t typeBit = detail::typeBit(ref.type());  // one bit for both tests below
+  if ((typeBit & (detail::kSignedTypes | detail::kUnsignedTypes)) == 0U) {
     return 0;
   }
-  uint64_t raw = loadNative(address(ref), ref.size());
+  const uint8_t* value = address(ref);
+  const size_t size = ref.size();
+  uint32_t raw = 0;  // as loadNative(): 0 for a size other than 1, 2, 4 and 8
+  if (size == 1U) {
+    raw = *value;
+  } else if (size == 2U) {
+    raw = loadAligned<uint16_t>(value);
+  } else if (size == 4U || size == 8U) {  // of 8 bytes, the low half
+    raw = loadAligned<uint32_t>(kLittleEndianHost || size == 4U ? value : value + 4);
+  }
   if (nodeIdConstant(ref.attributes())) {
     raw += nodeId_;
   }
-  if (isSigned(type)) {
-    return static_cast<uint64_t>(signExtend(raw, ref.size()));
+  if ((typeBit & detail::kSignedTypes) != 0U && size - 1U < 3U) {  // 1 to 3 bytes: the sign
+    const auto unused = static_cast<unsigned>(32U - 8U * size);    // into the upper bits
+    raw = static_cast<uint32_t>(static_cast<int32_t>(raw << unused) >> unused);
+  }
+  return raw;
+}
+
+uint64_t ObjectDictionary::readUnsigned(const EntryRef& ref) const noexcept {
+  const uint32_t low = readUnsigned32(ref);  // 0 for a type that is not an integer
+  const DataType type = ref.type();
+  if (ref.size() != 8U || (!isSigned(type) && !isUnsigned(type))) {
+    // Of up to 4 bytes, widened; 5 to 7 bytes hold 0 (and a `$NODEID` constant its node-id).
+    return isSigned(type) ? static_cast<uint64_t>(static_cast<int32_t>(low)) : low;
+  }
+  uint64_t raw = loadAligned<uint64_t>(address(ref));
+  if (nodeIdConstant(ref.attributes())) {
+    raw += nodeId_;
   }
   return raw;
 }
@@ -281,7 +310,7 @@ uint64_t ObjectDictionary::readUnsigned(uint16_t index, uint8_t subIndex,
 uint32_t ObjectDictionary::readUnsigned32(uint16_t index, uint8_t subIndex,
                                           uint32_t fallback) const noexcept {
   const EntryRef ref = find(index, subIndex);
-  return ref.valid() ? static_cast<uint32_t>(readUnsigned(ref)) : fallback;
+  return ref.valid() ? readUnsigned32(ref) : fallback;
 }
 
 bool ObjectDictionary::storeUnsigned(uint16_t index, uint8_t subIndex, uint64_t value) noexcept {

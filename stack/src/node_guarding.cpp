@@ -46,7 +46,7 @@ NodeGuarding::Event NodeGuarding::process(Microseconds now) noexcept {
   if (!guarded_ || expired_ || !life_.fired(now)) {
     return Event::kNone;
   }
-  if (dictionary_.readUnsigned(HeartbeatProducer::kIndex, 0, 0) != 0U) {
+  if (dictionary_.readUnsigned32(HeartbeatProducer::kIndex, 0, 0) != 0U) {
     // The heartbeat producer started while guarding ran: requests are no longer answered
     // (CiA 301 7.2.8.3.2), so the life time ran out for want of them. Life guarding stops
     // until the next answered request.

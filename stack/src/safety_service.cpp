@@ -121,7 +121,7 @@ void SafetyService::start(Microseconds now) noexcept {
   active_ = 0;
   const od::ObjectDictionary& dictionary = s_.access.dictionary();
   const bool anySrdo = dictionary.findObject(srdo::kConfigurationValid) != nullptr;
-  if (anySrdo && dictionary.readUnsigned(srdo::kConfigurationValid, 0, 0) != srdo::kValid) {
+  if (anySrdo && dictionary.readUnsigned32(srdo::kConfigurationValid, 0, 0) != srdo::kValid) {
     return;  // not configured: no SRDO runs, the working state is not allowed
   }
   for (uint8_t number = 1; number <= 64U; ++number) {
@@ -166,7 +166,7 @@ void SafetyService::fail(SrdoFailure failure, uint8_t number) noexcept {
 bool SafetyService::unchanged(const SrdoChannel& channel) const noexcept {
   const od::ObjectDictionary& dictionary = s_.access.dictionary();
   SrdoConfiguration now;
-  return dictionary.readUnsigned(srdo::kConfigurationValid, 0, 0) == srdo::kValid &&
+  return dictionary.readUnsigned32(srdo::kConfigurationValid, 0, 0) == srdo::kValid &&
          readSrdoConfiguration(dictionary, channel.configuration().number, &now) ==
              SrdoCheck::kValid &&
          now.signature == channel.configuration().signature;

@@ -103,7 +103,7 @@ AbortCode SdoServers::write(od::ObjectDictionary& dictionary, const od::EntryRef
     if ((value & (kExtended | kReserved)) != 0U) {
       return AbortCode::kInvalidValue;  // 11-bit CAN-IDs only
     }
-    const auto current = static_cast<uint32_t>(dictionary.readUnsigned(ref.index(), sub, 0));
+    const uint32_t current = dictionary.readUnsigned32(ref.index(), sub, 0);
     const bool valid = (value & kNotValid) == 0U;
     if (valid && (current & kNotValid) == 0U && (value & kCanIdBits) != (current & kCanIdBits)) {
       return AbortCode::kInvalidValue;  // invalidate before changing the CAN-ID

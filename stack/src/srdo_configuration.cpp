@@ -117,7 +117,7 @@ SrdoCheck readSrdoConfiguration(const od::ObjectDictionary& dictionary, uint8_t 
       c.length == 0U) {
     return SrdoCheck::kMapping;
   }
-  if (dictionary.readUnsigned(srdo::kSignatures, number, 0) != c.signature) {
+  if (dictionary.readUnsigned32(srdo::kSignatures, number, 0) != c.signature) {
     return SrdoCheck::kSignature;
   }
   return SrdoCheck::kValid;

@@ -45,7 +45,7 @@ GefranDevice::GefranDevice(Node& node, const GefranValues& values, HallSensors& 
 }
 
 uint32_t GefranDevice::value(uint16_t index, uint8_t sub) const noexcept {
-  return static_cast<uint32_t>(node_.dictionary().readUnsigned(index, sub, 0));
+  return node_.dictionary().readUnsigned32(index, sub, 0);
 }
 
 void GefranDevice::onResetApplication() noexcept {

@@ -33,7 +33,7 @@ SoloDevice::SoloDevice(SoloNode& node, DriveBackend& drive, uint8_t powerOnNodeI
       attached_(node.attachHook(kFirstObject, kLastObject, *this) && node.addListener(*this)) {}
 
 uint32_t SoloDevice::readU32(uint16_t index) const noexcept {
-  return static_cast<uint32_t>(node_.dictionary().readUnsigned(index, 0, 0));
+  return node_.dictionary().readUnsigned32(index, 0, 0);
 }
 
 void SoloDevice::storeSfxt(uint16_t index, double value) noexcept {

@@ -87,6 +87,11 @@ uint64_t loadNative(const uint8_t* address, size_t size) noexcept;
 /// Stores the low `size` bytes of `raw` as loadNative() loads them; nothing for another size.
 void storeNative(uint8_t* address, uint64_t raw, size_t size) noexcept;
 
+/// Adds `addend` (a node-id) to the little-endian number of `length` bytes at `bytes`, carrying
+/// into its higher bytes; what would go beyond its top byte is dropped, as in the number's own
+/// width. In 8-bit steps: no 64-bit arithmetic, whatever the length.
+void addLittleEndian(uint8_t* bytes, size_t length, uint8_t addend) noexcept;
+
 /// Sign-extends the low `length` bytes of `raw`. `length` in 1..8 (0 gives 0).
 int64_t signExtend(uint64_t raw, size_t length) noexcept;
 

@@ -107,6 +107,8 @@ class ObjectDictionary {
   /// Returns 0 for other types.
   uint64_t readUnsigned(const EntryRef& ref) const noexcept;
   int64_t readSigned(const EntryRef& ref) const noexcept;
+  /// readUnsigned(ref) truncated to 32 bits, computed in 32 bits (what small cores prefer).
+  uint32_t readUnsigned32(const EntryRef& ref) const noexcept;
 
   /// Stores a numeric value without any check (the caller knows it is valid). No-op for ROM
   /// entries and non-integer types.
@@ -193,6 +195,14 @@ class ObjectDictionary {
   /// Adds the node-id to every value of a `$NODEID` row of `object` (after its defaults were
   /// written).
   void addNodeId(const Object& object, const SubEntry& row) noexcept;
+  /// Adds the node-id to the number of `size` bytes at `value` (native byte order).
+  void addNodeIdTo(uint8_t* value, size_t size) const noexcept {
+    if constexpr (kLittleEndianHost) {
+      addLittleEndian(value, size, nodeId_);  // the native bytes are little-endian
+    } else {
+      storeNative(value, loadNative(value, size) + nodeId_, size);
+    }
+  }
   AbortCode writeChecked(const EntryRef& ref, const uint8_t* source, size_t length) noexcept;
 
   const Definition* definition_;
