@@ -124,5 +124,36 @@ TEST_F(ScalarTest, ReadUnsigned32IsTheLowHalfOfReadUnsignedForEveryEntry) {
   EXPECT_EQ(byRef_.readUnsigned32(0x1008, 0, 0xDEADBEEFU), 0U);
 }
 
+// storeUnsigned32() stores what the out-of-line store of a Scalar (storeNative() of the value,
+// zero-extended) does into every integer in RAM (an entry of 8 bytes gets a zero high half over
+// the ones before), and nothing into any other entry or a missing one.
+TEST_F(ScalarTest, StoreUnsigned32StoresTheValueZeroExtendedIntoEveryInteger) {
+  size_t wide = 0;
+  for (const uint32_t value : {0x0U, 0x85U, 0xFFFEU, 0x80000000U, 0xFEDCBA98U}) {
+    for (const EntryRef& ref : Entries(gen::example::kDefinition)) {
+      const bool integer = isSigned(ref.type()) || isUnsigned(ref.type());
+      for (ObjectDictionary* dictionary : {&byRef_, &byScalar_}) {
+        dictionary->storeScalar(dictionary->scalar(ref), ~uint64_t{0});
+      }
+      if (integer) {
+        byRef_.storeScalar(byRef_.scalar(ref), uint64_t{value});
+      }
+      EXPECT_TRUE(byScalar_.storeUnsigned32(ref.index(), ref.subIndex(), value));
+      ASSERT_EQ(std::memcmp(&refValues_, &scalarValues_, sizeof(refValues_)), 0)
+          << std::hex << ref.index() << ":" << unsigned{ref.subIndex()} << " " << value;
+      if (integer) {
+        byRef_.storeScalar(byRef_.scalar(ref), uint64_t{value ^ 1U});
+      }
+      byScalar_.storeUnsigned32(ref, value ^ 1U);
+      ASSERT_EQ(std::memcmp(&refValues_, &scalarValues_, sizeof(refValues_)), 0)
+          << std::hex << ref.index() << ":" << unsigned{ref.subIndex()} << " " << value;
+      wide += integer && ref.size() == 8U ? 1U : 0U;
+    }
+  }
+  EXPECT_GT(wide, 0U);
+  EXPECT_FALSE(byScalar_.storeUnsigned32(0x5FFF, 0, 1));
+  EXPECT_EQ(std::memcmp(&refValues_, &scalarValues_, sizeof(refValues_)), 0);
+}
+
 }  // namespace
 }  // namespace costa::od

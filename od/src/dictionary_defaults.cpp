@@ -34,7 +34,7 @@ void writeDefault(const Definition& definition, const SubEntry& row, const Defau
                   uint8_t* target) noexcept {
   const size_t bytes = storageBytes(row);
   if (isNumeric(row.type) && bytes <= 4U) {
-    storeNative(target, value.value(), bytes);  // the number itself
+    storeNative32(target, value.value(), bytes);  // the number itself
     return;
   }
   const uint8_t* stored = definition.defaultBytes + value.value();

@@ -15,11 +15,18 @@ uint64_t loadNative(const uint8_t* address, size_t size) noexcept {
 }
 
 void storeNative(uint8_t* address, uint64_t raw, size_t size) noexcept {
+  if (size == 8U) {
+    storeAligned(address, raw);
+  } else {
+    storeNative32(address, static_cast<uint32_t>(raw), size);
+  }
+}
+
+void storeNative32(uint8_t* address, uint32_t raw, size_t size) noexcept {
   switch (size) {
     case 1: *address = static_cast<uint8_t>(raw); break;
     case 2: storeAligned(address, static_cast<uint16_t>(raw)); break;
-    case 4: storeAligned(address, static_cast<uint32_t>(raw)); break;
-    case 8: storeAligned(address, raw); break;
+    case 4: storeAligned(address, raw); break;
     default: break;
   }
 }

@@ -293,12 +293,17 @@ int64_t ObjectDictionary::readSigned(const EntryRef& ref) const noexcept {
   return static_cast<int64_t>(readUnsigned(ref));
 }
 
-void ObjectDictionary::storeUnsigned(const EntryRef& ref, uint64_t value) noexcept {
+void ObjectDictionary::storeHalves(const EntryRef& ref, uint32_t low, uint32_t high) noexcept {
   uint8_t* target = ramAddress(ref);
   if (target == nullptr || !(isSigned(ref.type()) || isUnsigned(ref.type()))) {
     return;
   }
-  storeNative(target, value, ref.size());
+  if (ref.size() == 8U) {  // two aligned words, in the CPU's order of the halves
+    storeAligned(target + (kLittleEndianHost ? 0U : 4U), low);
+    storeAligned(target + (kLittleEndianHost ? 4U : 0U), high);
+    return;
+  }
+  storeNative32(target, low, ref.size());
 }
 
 uint64_t ObjectDictionary::readUnsigned(uint16_t index, uint8_t subIndex,
@@ -319,6 +324,15 @@ bool ObjectDictionary::storeUnsigned(uint16_t index, uint8_t subIndex, uint64_t 
     return false;
   }
   storeUnsigned(ref, value);
+  return true;
+}
+
+bool ObjectDictionary::storeUnsigned32(uint16_t index, uint8_t subIndex, uint32_t value) noexcept {
+  const EntryRef ref = find(index, subIndex);
+  if (!ref.valid()) {
+    return false;
+  }
+  storeHalves(ref, value, 0);
   return true;
 }
 

@@ -100,7 +100,7 @@ void EmcyProducer::signal(uint16_t code, uint8_t registerBits,
 }
 
 void EmcyProducer::publishRegister() noexcept {
-  dictionary_.storeUnsigned(kErrorRegisterIndex, 0, errorRegister());  // when 0x1001 is there
+  dictionary_.storeUnsigned32(kErrorRegisterIndex, 0, errorRegister());  // when 0x1001 is there
 }
 
 void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
@@ -123,10 +123,10 @@ void EmcyProducer::record(uint16_t code, const uint8_t* manufacturer) noexcept {
   for (unsigned sub = 1; sub <= count; ++sub) {
     const uint32_t older =
         dictionary_.readUnsigned32(kErrorHistoryIndex, static_cast<uint8_t>(sub), 0);
-    dictionary_.storeUnsigned(kErrorHistoryIndex, static_cast<uint8_t>(sub), value);
+    dictionary_.storeUnsigned32(kErrorHistoryIndex, static_cast<uint8_t>(sub), value);
     value = older;
   }
-  dictionary_.storeUnsigned(kErrorHistoryIndex, 0, count);
+  dictionary_.storeUnsigned32(kErrorHistoryIndex, 0, count);
 }
 
 void EmcyProducer::enqueue(uint16_t code, uint8_t registerValue,
@@ -208,7 +208,7 @@ AbortCode EmcyProducer::write(od::ObjectDictionary& dictionary, const od::EntryR
     }
     // Every sub-index to 0, the last first: one loop ends with sub-index 0, the count.
     for (unsigned sub = historyEntries(dictionary); sub-- != 0U;) {
-      dictionary.storeUnsigned(kErrorHistoryIndex, static_cast<uint8_t>(sub), 0);
+      dictionary.storeUnsigned32(kErrorHistoryIndex, static_cast<uint8_t>(sub), 0);
     }
     return AbortCode::kNone;
   }

@@ -314,7 +314,7 @@ AbortCode SafetyService::write(od::ObjectDictionary& dictionary, const od::Entry
     return written;
   }
   if (srdoObject(index) && index != srdo::kConfigurationValid) {
-    (void)dictionary.storeUnsigned(srdo::kConfigurationValid, 0, srdo::kNotValid);
+    (void)dictionary.storeUnsigned32(srdo::kConfigurationValid, 0, srdo::kNotValid);
   }
   s_.routes.invalidate();
   return AbortCode::kNone;

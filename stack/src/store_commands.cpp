@@ -31,7 +31,7 @@ AbortCode StoreCommands::prepareRead(od::ObjectDictionary& dictionary, const od:
     const bool able =
         store_ != nullptr && store_->isLaidOut() && groupsOf(ref.index(), ref.subIndex()) != 0U;
     const bool autonomous = savesOnWrite_ && ref.index() == kStoreIndex;
-    dictionary.storeUnsigned(ref, !able ? 0U : autonomous ? 3U : 1U);
+    dictionary.storeUnsigned32(ref, !able ? 0U : autonomous ? 3U : 1U);
   }
   return AbortCode::kNone;
 }

@@ -86,6 +86,8 @@ inline uint64_t loadLittleEndian(const uint8_t* source, size_t length) noexcept 
 uint64_t loadNative(const uint8_t* address, size_t size) noexcept;
 /// Stores the low `size` bytes of `raw` as loadNative() loads them; nothing for another size.
 void storeNative(uint8_t* address, uint64_t raw, size_t size) noexcept;
+/// storeNative() of a number of 1, 2 or 4 bytes; nothing for another size.
+void storeNative32(uint8_t* address, uint32_t raw, size_t size) noexcept;
 
 /// Adds `addend` (a node-id) to the little-endian number of `length` bytes at `bytes`, carrying
 /// into its higher bytes; what would go beyond its top byte is dropped, as in the number's own

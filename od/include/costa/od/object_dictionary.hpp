@@ -112,7 +112,12 @@ class ObjectDictionary {
 
   /// Stores a numeric value without any check (the caller knows it is valid). No-op for ROM
   /// entries and non-integer types.
-  void storeUnsigned(const EntryRef& ref, uint64_t value) noexcept;
+  void storeUnsigned(const EntryRef& ref, uint64_t value) noexcept {
+    storeHalves(ref, static_cast<uint32_t>(value), static_cast<uint32_t>(value >> 32U));
+  }
+  /// The same with a value of 32 bits (zero-extended into an entry of 8 bytes), computed in 32
+  /// bits (what small cores prefer).
+  void storeUnsigned32(const EntryRef& ref, uint32_t value) noexcept { storeHalves(ref, value, 0); }
 
   /// `ref` resolved for the two below (see Scalar); not valid when `ref` is not. O(1).
   Scalar scalar(const EntryRef& ref) const noexcept;
@@ -164,6 +169,8 @@ class ObjectDictionary {
   uint32_t readUnsigned32(uint16_t index, uint8_t subIndex, uint32_t fallback) const noexcept;
   /// Stores when present; returns false when absent.
   bool storeUnsigned(uint16_t index, uint8_t subIndex, uint64_t value) noexcept;
+  /// The same with a value of 32 bits (storeUnsigned32(ref, value)).
+  bool storeUnsigned32(uint16_t index, uint8_t subIndex, uint32_t value) noexcept;
 
   /// Copies defaults into every RAM entry whose index is in [first, last].
   void restoreDefaults(uint16_t first, uint16_t last) noexcept;
@@ -204,6 +211,8 @@ class ObjectDictionary {
     }
   }
   AbortCode writeChecked(const EntryRef& ref, const uint8_t* source, size_t length) noexcept;
+  /// storeUnsigned() of the value whose low and high 32 bits are `low` and `high`.
+  void storeHalves(const EntryRef& ref, uint32_t low, uint32_t high) noexcept;
 
   const Definition* definition_;
   uint8_t* values_;
