@@ -41,7 +41,7 @@ TEST_F(ObjectDictionaryTest, ObjectsAreSortedAndEveryEntryIsFound) {
         EXPECT_EQ(dictionary_.find(object.index, sub, &ref), AbortCode::kNone);
         EXPECT_EQ(ref.row, &row);
         EXPECT_EQ(ref.subIndex(), sub);
-        const unsigned base = row.attributes & kInRom ? object.romBase : object.ramBase;
+        const unsigned base = row.attributes & kInRom ? 0U : object.ramBase;  // ROM: from the start
         EXPECT_EQ(ref.offset(), base + row.offset + k * row.size);
       }
     }

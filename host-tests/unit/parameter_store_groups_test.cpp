@@ -115,7 +115,7 @@ struct ManyGroupsTables {
                              static_cast<uint8_t>(i + 1U),
                              0,
                              i};
-      objects[i] = od::Object{static_cast<uint16_t>(0x2000U + i), od::ObjectCode::kVar, 1, i, 0, 0};
+      objects[i] = od::Object{static_cast<uint16_t>(0x2000U + i), od::ObjectCode::kVar, 1, i, 0};
     }
     definition = od::Definition{objects, kCount,   subs,    constants, nullptr, nullptr, 0, kCount,
                                 0x1234U, "groups", nullptr, nullptr,   nullptr, 0,       0};

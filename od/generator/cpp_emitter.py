@@ -261,7 +261,10 @@ def _place_rows(device: Device, layout: Layout, row_of: dict) -> _PlacedRows:
     placed, seen = _PlacedRows(), {}
     for obj in device.objects:
         rows = rows_of(obj, row_of)
+        # ROM rows hold where their values are in the constants block: objects share them only
+        # when they share their constants.
         shape = (layout.shapes.get((obj.index, VALUES)), layout.shapes.get((obj.index, CONSTANTS)),
+                 layout.bases.get((obj.index, CONSTANTS)),
                  tuple(_row_key(row, layout, row_of) for row in rows))
         placed.row_counts[obj.index] = len(rows)
         label = f"0x{obj.index:04X} {comment_text(obj.name)}"
@@ -322,10 +325,11 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
             first = row[0]
             key = (first.index, first.sub)
             limits = f"{row_of[key] + 1}" if key in row_of else "0"
+            offset = layout.offsets[key] if first.in_rom else layout.relative[key]
             lines.append(f"{_INDENT * 2}{{{first.sub}, {len(row)}, costa::od::DataType::"
                          f"{first.data_type.enumerator}, {_attributes_text(first)}, "
                          f"{first.size}, {_group_text(first.group)}, {limits}, "
-                         f"{layout.relative[key]}}},")
+                         f"{offset}}},")
     if not placed.runs:
         lines.append(f"{_INDENT * 2}{{0, 0, costa::od::DataType::kBoolean, 0, 0, 0, 0, 0}},"
                      "  // none: keeps the array non-empty")
@@ -342,10 +346,9 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
     lines.append("constexpr costa::od::Object kObjects[] = {")
     for obj in device.objects:
         ram = layout.bases.get((obj.index, VALUES), "0")
-        rom = layout.bases.get((obj.index, CONSTANTS), "0")
         lines.append(f"{_INDENT * 2}{{0x{obj.index:04X}, costa::od::ObjectCode::"
                      f"{OBJECT_CODES[obj.code]}, {placed.row_counts[obj.index]}, "
-                     f"{placed.first_rows[obj.index]}, {ram}, {rom}}},")
+                     f"{placed.first_rows[obj.index]}, {ram}}},")
     lines += ["};", ""]
     lines.append("static_assert(costa::od::ramInIndexOrder(kObjects, kRows), \"RAM values in the "
                  "order of their indices\");")

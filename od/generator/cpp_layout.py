@@ -83,6 +83,8 @@ class Layout:
     # The C++ types of an object's member of a block, in order ((index, block type name) ->
     # tuple): members of one shape have their values at the same relative offsets.
     shapes: dict = field(default_factory=dict)
+    # (index, sub) of every entry in ROM, in the order of the objects and their members.
+    rom_entries: list = field(default_factory=list)
 
 
 def _items_form(obj: OdObject, block_entries: list) -> bool:
@@ -157,16 +159,51 @@ def _record_block(block: Block, layout: Layout) -> None:
                                                 f"0x{first.index:04X}:1..{len(member.entries)}"))
 
 
+def _constants_key(member: BlockMember) -> tuple:
+    """What a member of Constants holds: its C++ types and every value's default."""
+    return (member.struct_type != "",
+            tuple((m.entries[0].data_type.cpp_type, element_suffix(m.entries[0]), m.is_items,
+                   tuple((e.data_type.code, e.size, repr(e.default), e.node_id_relative)
+                         for e in m.entries))
+                  for m in member.members))
+
+
+def _share_constants(layout: Layout, shared: dict) -> None:
+    """The entries of objects whose constants equal an earlier object's (`shared`: index ->
+    that object's index) at that object's offsets: one copy of the values in ROM."""
+    for index, owner in shared.items():
+        layout.bases[(index, CONSTANTS)] = layout.bases[(owner, CONSTANTS)]
+        layout.shapes[(index, CONSTANTS)] = layout.shapes[(owner, CONSTANTS)]
+        own = [k for k in layout.rom_entries if k[0] == index]
+        theirs = [k for k in layout.rom_entries if k[0] == owner]
+        for key, their in zip(own, theirs):
+            layout.offsets[key] = layout.offsets[their]
+            layout.relative[key] = layout.relative[their]
+            layout.positions[key] = layout.positions[their]
+
+
 def plan_layout(device: Device) -> Layout:
     values, constants = Block(VALUES), Block(CONSTANTS)
+    owners, shared, rom_entries = {}, {}, []
     for obj in device.objects:
-        for block, rom in ((values, False), (constants, True)):
-            member = _object_member(obj, rom)
-            if member is not None:
-                block.members.append(member)
+        member = _object_member(obj, False)
+        if member is not None:
+            values.members.append(member)
+        member = _object_member(obj, True)
+        if member is None:
+            continue
+        rom_entries += [(e.index, e.sub) for m in member.members for e in m.entries]
+        key = _constants_key(member)
+        if key in owners:
+            shared[obj.index] = owners[key]  # the same constants as an earlier object: shared
+        else:
+            owners[key] = obj.index
+            constants.members.append(member)
     layout = Layout(values, constants)
+    layout.rom_entries = rom_entries
     _record_block(values, layout)
     _record_block(constants, layout)
+    _share_constants(layout, shared)
     for entry in device.all_entries():  # DOMAINs
         layout.offsets.setdefault((entry.index, entry.sub), "0")
         layout.relative.setdefault((entry.index, entry.sub), "0")

@@ -82,7 +82,7 @@ class ExampleOutputTest(unittest.TestCase):
             "{0, 1, costa::od::DataType::kUnsigned16, costa::od::kReadable | costa::od::kWritable"
             " | costa::od::kHasLimits, 2, costa::od::kGroupCommunication, 1, 0},", self.cpp)
         self.assertIn("{0x1017, costa::od::ObjectCode::kVar, 1, 11, "
-                      "offsetof(Values, x1017_producer_heartbeat_time), 0},", self.cpp)
+                      "offsetof(Values, x1017_producer_heartbeat_time)},", self.cpp)
         # Record members of one type stored back to back: one row of four.
         self.assertIn(
             "{1, 4, costa::od::DataType::kUnsigned32, costa::od::kReadable | "
@@ -103,14 +103,18 @@ class ExampleOutputTest(unittest.TestCase):
         self.assertIn("+ 1 * sizeof(char[5])},", self.cpp)
         self.assertIn(
             "{0, 1, costa::od::DataType::kUnsigned8, costa::od::kReadable | costa::od::kInRom, 1,"
-            " costa::od::kGroupNone, 0, offsetof(Constants::X1018IdentityObject, "
-            "highest_sub_index_supported)},", self.cpp)
+            " costa::od::kGroupNone, 0, offsetof(Constants, x1018_identity_object) + "
+            "offsetof(Constants::X1018IdentityObject, highest_sub_index_supported)},", self.cpp)
+        # A ROM row's offset is from the start of the constants block.
+        self.assertIn("costa::od::kInRom, 4, costa::od::kGroupNone, 0, offsetof(Constants, "
+                      "x1000_device_type)},", self.cpp)
+        self.assertIn("{0x1000, costa::od::ObjectCode::kVar, 1, 0, 0},", self.cpp)
         self.assertIn("{0, 1, costa::od::DataType::kDomain, costa::od::kReadable | "
                       "costa::od::kWritable, 0, costa::od::kGroupNone, 0, 0},", self.cpp)
         self.assertIn("costa::od::kReadable | costa::od::kWritable | costa::od::kNodeIdRelative"
                       " | costa::od::kPlainInteger, 4, costa::od::kGroupCommunication, 0, 0},", self.cpp)
         self.assertIn("{0x1014, costa::od::ObjectCode::kVar, 1, 8, offsetof(Values, "
-                      "x1014_cob_id_emcy), 0},", self.cpp)
+                      "x1014_cob_id_emcy)},", self.cpp)
         self.assertIn("costa::od::kGroupLss", self.cpp)
         self.assertIn(", 1, 7, 0, offsetof(Values::X2009LssSettings, custom_group)}", self.cpp)
         # A ROM item and RAM items of one array differ in attributes: separate rows.
@@ -132,18 +136,21 @@ class ExampleOutputTest(unittest.TestCase):
 
     def test_objects_of_one_shape_share_rows(self):
         # The two RPDO communication parameters: one run of rows (from row 14), each object
-        # at its own bases, and a check that the second one's values lie where the rows say.
+        # at its own RAM base, and a check that the second one's values lie where the rows say.
         self.assertIn("    // 0x1400 RPDO1 communication parameter, 0x1401\n", self.cpp)
         self.assertIn("{0x1400, costa::od::ObjectCode::kRecord, 3, 14, offsetof(Values, "
-                      "x1400_rpdo1_communication_parameter), offsetof(Constants, "
                       "x1400_rpdo1_communication_parameter)},", self.cpp)
         self.assertIn("{0x1401, costa::od::ObjectCode::kRecord, 3, 14, offsetof(Values, "
-                      "x1401_rpdo2_communication_parameter), offsetof(Constants, "
                       "x1401_rpdo2_communication_parameter)},", self.cpp)
         self.assertIn("static_assert(offsetof(Values::X1401Rpdo2CommunicationParameter, "
                       "cob_id_used_by_rpdo) == offsetof(Values::X1400Rpdo1CommunicationParameter,"
                       " cob_id_used_by_rpdo), \"0x1401:1 lies where the row it shares says\");",
                       self.cpp)
+        # Their constants (sub-index 0, 2) are equal: one copy in ROM, the first object's.
+        self.assertIn("X1400Rpdo1CommunicationParameter x1400_rpdo1_communication_parameter;",
+                      self.hpp)
+        self.assertNotIn("x1401_rpdo2_communication_parameter;", self.hpp.split(
+            "struct Constants {")[1])
         # Objects of another shape (the TPDO's parameter has five rows) have rows of their own.
         self.assertIn("{0x1800, costa::od::ObjectCode::kRecord, 5, 19, ", self.cpp)
 
@@ -257,6 +264,40 @@ class SmallOutputTest(unittest.TestCase):
         self.assertNotIn("kLimits", result.files["test_od.cpp"])
         self.assertIn("    nullptr,\n    nullptr,\n    kObjectSlots,\n    29,\n    0x00U,\n};",
                       result.files["test_od.cpp"])
+
+    def test_objects_share_rows_only_with_their_constants(self):
+        # Three records of one shape: the first two with the same constant sub-index 0 share it
+        # and their rows; the third, whose sub-index 0 differs, has its own copy and its rows.
+        record = """
+            [{index}]
+            ParameterName={name}
+            ObjectType=0x9
+            SubNumber=2
+            [{index}sub0]
+            ParameterName=Highest sub-index supported
+            DataType=0x0005
+            AccessType=const
+            DefaultValue={highest}
+            [{index}sub1]
+            ParameterName=Value
+            DataType=0x0007
+            AccessType=rw
+            """
+        result = run_text(eds("".join(record.format(index=i, name=n, highest=h) for i, n, h in
+                                      ((2000, "First", 1), (2001, "Same", 1), (2002, "Other", 2)))))
+        self.assertEqual(result.status, 0)
+        cpp, hpp = result.files["test_od.cpp"], result.files["test_od.hpp"]
+        constants = hpp.split("struct Constants {")[1]
+        self.assertIn("x2000_first;", constants)
+        self.assertNotIn("x2001_same;", constants)
+        self.assertIn("x2002_other;", constants)
+        self.assertEqual(cpp.count("offsetof(Constants, x2000_first) + offsetof(Constants::"
+                                   "X2000First, highest_sub_index_supported)}"), 1)
+        self.assertIn("offsetof(Constants, x2002_other) + offsetof(Constants::X2002Other, "
+                      "highest_sub_index_supported)}", cpp)
+        self.assertIn("{0x2000, costa::od::ObjectCode::kRecord, 2, 0, ", cpp)
+        self.assertIn("{0x2001, costa::od::ObjectCode::kRecord, 2, 0, ", cpp)
+        self.assertIn("{0x2002, costa::od::ObjectCode::kRecord, 2, 2, ", cpp)
 
     def test_integer_limits_name_the_integer_check_only(self):
         result = run_text(eds("""

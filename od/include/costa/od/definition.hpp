@@ -85,10 +85,11 @@ constexpr bool sortedByOffset(const DefaultValue (&defaults)[N]) noexcept {
 
 /// One row of an object: `count` consecutive sub-indices from `subIndex` that share every
 /// property. Value k of the row (sub-index subIndex + k) lies at `offset + k * size` from its
-/// object's base in the row's block (Object::ramBase, or Object::romBase when kInRom); the
-/// generator merges only fixed-size values stored back to back (array items, record members of
-/// one type). Objects of one shape (the PDO parameters of a kind, VARs of one type and access)
-/// share their rows. Use EntryRef for one sub-index's properties.
+/// object's base in the RAM block (Object::ramBase), or, when kInRom, from the start of the
+/// constants block; the generator merges only fixed-size values stored back to back (array
+/// items, record members of one type). Objects of one shape (the PDO parameters of a kind, VARs
+/// of one type and access) share their rows, and objects whose constants are equal too share
+/// one copy of those constants. Use EntryRef for one sub-index's properties.
 struct SubEntry {
   uint8_t subIndex;    ///< First sub-index of the row.
   uint8_t count;       ///< Sub-indices in the row, 1..255.
@@ -97,8 +98,8 @@ struct SubEntry {
   uint16_t size;       ///< Bytes of one value; capacity for VISIBLE_STRING; 0 for DOMAIN.
   uint8_t group;       ///< StorageGroup.
   uint8_t limits;      ///< 0: no limits; else 1 + the row of Definition::limits.
-  uint16_t offset;     ///< Of the first value, from the object's base in the RAM values
-                       ///< block, or in the ROM constants block when kInRom.
+  uint16_t offset;     ///< Of the first value: from the object's base in the RAM values
+                       ///< block, or from the start of the ROM constants block when kInRom.
 };
 
 /// Object codes of CiA 301 (EDS ObjectType).
@@ -110,15 +111,15 @@ enum class ObjectCode : uint8_t {
 };
 
 /// One index of the dictionary: `rowCount` rows from Definition::rows[firstRow], sorted by
-/// sub-index (rowsOf()), and where its values begin in each block. 10 bytes, no pointer: the
-/// rows of objects of one shape are one run of Definition::rows.
+/// sub-index (rowsOf()), and where its values begin in the RAM block (the rows of its constants
+/// say where those are). 8 bytes, no pointer: the rows of objects of one shape are one run of
+/// Definition::rows.
 struct Object {
   uint16_t index;
   ObjectCode code;
   uint8_t rowCount;
   uint16_t firstRow;
   uint16_t ramBase;  ///< Offset of its values in the RAM block (its rows' offsets add to it).
-  uint16_t romBase;  ///< Offset of its values in the ROM constants block.
 };
 
 /// A whole dictionary. `objects` is sorted by index.
@@ -164,7 +165,7 @@ constexpr const SubEntry* rowsOf(const Definition& definition, const Object& obj
 
 /// Offset of value `k` of `row` of `object` in the row's block.
 constexpr uint32_t valueOffset(const Object& object, const SubEntry& row, uint32_t k) noexcept {
-  return ((row.attributes & kInRom) != 0U ? object.romBase : object.ramBase) + row.offset +
+  return ((row.attributes & kInRom) != 0U ? 0U : object.ramBase) + row.offset +
          k * row.size;
 }
 
