@@ -53,13 +53,12 @@ uint8_t EmcyProducer::frameRegister(uint8_t registerBits) const noexcept {
   return static_cast<uint8_t>(errorRegister() | kErrorGeneric | registerBits);
 }
 
-bool EmcyProducer::active(uint16_t code, uint8_t source) const noexcept {
-  for (size_t i = 0; i < count_; ++i) {
-    if (conditions_[i].code == code && conditions_[i].source == source) {
-      return true;
-    }
+size_t EmcyProducer::position(uint16_t code, uint8_t source) const noexcept {
+  size_t i = 0;
+  while (i < count_ && (conditions_[i].code != code || conditions_[i].source != source)) {
+    ++i;
   }
-  return false;
+  return i;
 }
 
 bool EmcyProducer::raise(uint16_t code, uint8_t source, uint8_t registerBits,
@@ -80,17 +79,16 @@ bool EmcyProducer::raise(uint16_t code, uint8_t source, uint8_t registerBits,
 }
 
 bool EmcyProducer::clear(uint16_t code, uint8_t source) noexcept {
-  for (size_t i = 0; i < count_; ++i) {
-    if (conditions_[i].code == code && conditions_[i].source == source) {
-      conditions_[i] = conditions_[--count_];  // the last takes its place
-      publishRegister();
-      if (count_ == 0U && profile_.errorResetFrame) {
-        enqueue(0x0000, 0, nullptr);
-      }
-      return true;
-    }
+  const size_t i = position(code, source);
+  if (i == count_) {
+    return false;
   }
-  return false;
+  conditions_[i] = conditions_[--count_];  // the last takes its place
+  publishRegister();
+  if (count_ == 0U && profile_.errorResetFrame) {
+    enqueue(0x0000, 0, nullptr);
+  }
+  return true;
 }
 
 void EmcyProducer::signal(uint16_t code, uint8_t registerBits,

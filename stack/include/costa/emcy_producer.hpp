@@ -86,7 +86,9 @@ class EmcyProducer : public ObjectHook {
   /// O(0x1003 entries).
   void signal(uint16_t code, uint8_t registerBits, const uint8_t* manufacturer = nullptr) noexcept;
 
-  bool active(uint16_t code, uint8_t source) const noexcept;
+  bool active(uint16_t code, uint8_t source) const noexcept {
+    return position(code, source) != count_;
+  }
   size_t activeCount() const noexcept { return count_; }
   uint8_t errorRegister() const noexcept;
   /// EMCY frames that could not be queued (queue full), since construction.
@@ -109,6 +111,8 @@ class EmcyProducer : public ObjectHook {
                   size_t length) noexcept override;
 
  private:
+  /// Where condition (`code`, `source`) is in the table; count_ when it is not active.
+  size_t position(uint16_t code, uint8_t source) const noexcept;
   void enqueue(uint16_t code, uint8_t registerValue, const uint8_t* manufacturer) noexcept;
   /// The register byte of an EMCY raised with `registerBits`.
   uint8_t frameRegister(uint8_t registerBits) const noexcept;

@@ -165,8 +165,7 @@ constexpr const SubEntry* rowsOf(const Definition& definition, const Object& obj
 
 /// Offset of value `k` of `row` of `object` in the row's block.
 constexpr uint32_t valueOffset(const Object& object, const SubEntry& row, uint32_t k) noexcept {
-  return ((row.attributes & kInRom) != 0U ? 0U : object.ramBase) + row.offset +
-         k * row.size;
+  return ((row.attributes & kInRom) != 0U ? 0U : object.ramBase) + row.offset + k * row.size;
 }
 
 /// True when the RAM values of `objects` lie in the order of their indices and sub-indices, as
