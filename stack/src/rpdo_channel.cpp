@@ -9,13 +9,7 @@
 namespace costa {
 
 bool RpdoChannel::configure(PdoContext& context) noexcept {
-  const od::ObjectDictionary& dictionary = context.access.dictionary();
-  const PdoCobId cob = decodePdoCobId(dictionary.readUnsigned32(index_, 1, 0x80000000U),
-                                      context.profile.cobIdPolarity);
-  valid_ = cob.valid && !cob.extended;
-  canId_ = static_cast<uint16_t>(cob.canId & 0x7FFU);
-  type_ = static_cast<uint8_t>(dictionary.readUnsigned32(index_, 2, 255));
-  eventTimerMs_ = static_cast<uint16_t>(dictionary.readUnsigned32(index_, 5, 0));
+  (void)readCommunication(context);
   stop();
   clearConditions(context);
   return resolveMapping(context);

@@ -6,15 +6,9 @@
 namespace costa {
 
 bool TpdoChannel::configure(PdoContext& context) noexcept {
+  rtrAllowed_ = readCommunication(context);
   const od::ObjectDictionary& dictionary = context.access.dictionary();
-  const PdoCobId cob = decodePdoCobId(dictionary.readUnsigned32(index_, 1, 0x80000000U),
-                                      context.profile.cobIdPolarity);
-  valid_ = cob.valid && !cob.extended;
-  rtrAllowed_ = cob.rtrAllowed;
-  canId_ = static_cast<uint16_t>(cob.canId & 0x7FFU);
-  type_ = static_cast<uint8_t>(dictionary.readUnsigned32(index_, 2, 255));
   inhibit_ = static_cast<uint16_t>(dictionary.readUnsigned32(index_, 3, 0));
-  eventTimerMs_ = static_cast<uint16_t>(dictionary.readUnsigned32(index_, 5, 0));
   syncStart_ = static_cast<uint8_t>(dictionary.readUnsigned32(index_, 6, 0));
   sampledValid_ = false;
   updateSyncPeriod();

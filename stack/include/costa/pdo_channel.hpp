@@ -45,6 +45,27 @@ struct PdoCobId {
 
 PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept;
 
+/// What an RPDO and a TPDO channel share: their communication object and the parameters both
+/// read from it (COB-ID, transmission type, event timer). The first eight bytes of either.
+class PdoChannel {
+ public:
+  uint16_t communicationIndex() const noexcept { return index_; }
+  bool valid() const noexcept { return valid_; }
+  uint32_t canId() const noexcept { return canId_; }
+  uint8_t transmissionType() const noexcept { return type_; }
+
+ protected:
+  /// Reads sub-indices 1 (COB-ID: validity, CAN-ID), 2 (type) and 5 (event timer); returns
+  /// whether the COB-ID allows RTR.
+  bool readCommunication(const PdoContext& context) noexcept;
+
+  uint16_t index_ = 0;
+  uint16_t canId_ = 0;
+  uint16_t eventTimerMs_ = 0;  ///< sub-index 5
+  uint8_t type_ = 0;
+  bool valid_ = false;
+};
+
 /// Resolves into `map` the mapping of the PDO whose communication parameter is at
 /// `communicationIndex`: the mapping object (index + 0x200) when the dictionary has one, else the
 /// device's static mapping (PdoProfile::staticMappings; at most PdoMap::kMaxEntries entries of

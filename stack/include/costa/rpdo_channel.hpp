@@ -21,7 +21,7 @@
 
 namespace costa {
 
-class RpdoChannel {
+class RpdoChannel : public PdoChannel {
  public:
   static constexpr uint16_t kEmcyLengthShort = 0x8210;  ///< PDO not processed: too few bytes
   static constexpr uint16_t kEmcyLengthLong = 0x8220;   ///< PDO longer than its mapping
@@ -37,7 +37,6 @@ class RpdoChannel {
   void answerWith(size_t tpdoChannel) noexcept { answer_ = static_cast<uint8_t>(tpdoChannel + 1U); }
   /// A TPDO answers it (only a quirk profile has them: without, the tests fold away).
   bool answered() const noexcept { return features::kQuirkProfiles && answer_ != 0U; }
-  uint16_t communicationIndex() const noexcept { return index_; }
 
   /// Reads the communication parameters and resolves the mapping; drops held data and clears
   /// the EMCY conditions (0x8210, 0x8220, 0x8250) the old parameters raised. False when the
@@ -46,9 +45,6 @@ class RpdoChannel {
   /// Resolves the mapping again (a hook was attached). Same result as configure().
   bool resolveMapping(PdoContext& context) noexcept;
 
-  bool valid() const noexcept { return valid_; }
-  uint32_t canId() const noexcept { return canId_; }
-  uint8_t transmissionType() const noexcept { return type_; }
   size_t mappedBytes() const noexcept { return map_.bytes(); }
 
   /// True for a data frame on this PDO's CAN-ID.
@@ -137,11 +133,6 @@ class RpdoChannel {
   bool checkLength(PdoContext& context, uint8_t dlc) noexcept;
   uint8_t source() const noexcept { return static_cast<uint8_t>(index_ & 0xFFU); }
 
-  uint16_t index_ = 0;
-  uint16_t canId_ = 0;
-  uint16_t eventTimerMs_ = 0;
-  uint8_t type_ = 0;
-  bool valid_ = false;
   bool holding_ = false;
   uint8_t raised_ = 0;  ///< the Condition bits whose EMCY this PDO raised
   /// The DLC for which onFrame() takes the quiet path: the mapped bytes while neither length

@@ -15,7 +15,7 @@
 
 namespace costa {
 
-class TpdoChannel {
+class TpdoChannel : public PdoChannel {
  public:
   /// Gives the channel its communication object, before anything else is asked of it.
   void bind(uint16_t communicationIndex) noexcept {
@@ -23,7 +23,6 @@ class TpdoChannel {
     inhibitUntil_ = kNever;
     eventDeadline_ = kNever;
   }
-  uint16_t communicationIndex() const noexcept { return index_; }
 
   /// Reads the communication parameters and resolves the mapping. False when the mapping could
   /// not be resolved (the PDO then carries nothing). O(entries x log objects).
@@ -31,9 +30,6 @@ class TpdoChannel {
   /// Resolves the mapping again (a hook was attached). Same result as configure().
   bool resolveMapping(PdoContext& context) noexcept;
 
-  bool valid() const noexcept { return valid_; }
-  uint32_t canId() const noexcept { return canId_; }
-  uint8_t transmissionType() const noexcept { return type_; }
   bool rtrAllowed() const noexcept { return rtrAllowed_; }
   bool eventDriven() const noexcept { return type_ >= 254U; }
   /// Events count for it: event-driven (254, 255) or acyclic synchronous (0, at the next SYNC).
@@ -104,15 +100,10 @@ class TpdoChannel {
     syncPeriod_ = running_ && valid_ && type_ - 1U < 240U && !waitingForStart_ ? type_ : 0U;
   }
 
-  uint16_t index_ = 0;
-  uint16_t canId_ = 0;
-  uint16_t inhibit_ = 0;       ///< 100 us units (sub-index 3)
-  uint16_t eventTimerMs_ = 0;  ///< sub-index 5
-  uint8_t type_ = 0;
+  uint16_t inhibit_ = 0;  ///< 100 us units (sub-index 3)
   uint8_t syncStart_ = 0;
   uint8_t syncCount_ = 0;
   uint8_t syncPeriod_ = 0;  ///< the type of a running synchronous cyclic PDO that counts SYNCs
-  bool valid_ = false;
   bool rtrAllowed_ = false;
   bool running_ = false;
   bool waitingForStart_ = false;
