@@ -45,15 +45,28 @@ void PdoEngine::bind() noexcept {
 void PdoEngine::configure() noexcept {
   running_ = false;
   for (size_t i = 0; i < rpdoCount_; ++i) {
-    if (!rpdos_[i].configure(context_)) {
-      ++unresolvableMappings_;
-    }
+    configureChannel(rpdos_[i], true);
   }
   for (size_t i = 0; i < tpdoCount_; ++i) {
-    if (!tpdos_[i].configure(context_)) {
-      ++unresolvableMappings_;
+    configureChannel(tpdos_[i], false);
+  }
+}
+
+void PdoEngine::configureChannel(PdoChannel& channel, bool receive) noexcept {
+  bool resolved = false;
+  if (receive) {
+    resolved = static_cast<RpdoChannel&>(channel).configure(context_);
+  } else {
+    auto& tpdo = static_cast<TpdoChannel&>(channel);
+    resolved = tpdo.configure(context_);
+    if (running_) {
+      tpdo.restart(context_, context_.clock.now);
+    } else {
+      tpdo.stop();
     }
-    tpdos_[i].stop();
+  }
+  if (!resolved) {
+    ++unresolvableMappings_;
   }
 }
 
@@ -157,10 +170,13 @@ bool PdoEngine::requestTransmission(uint16_t communicationIndex) noexcept {
   return true;
 }
 
-RpdoChannel* PdoEngine::findRpdo(uint16_t communicationIndex) noexcept {
-  for (size_t i = 0; i < rpdoCount_; ++i) {
-    if (rpdos_[i].communicationIndex() == communicationIndex) {
-      return &rpdos_[i];
+PdoChannel* PdoEngine::findChannel(uint16_t communicationIndex) noexcept {
+  const bool receive = communicationIndex < kTpdoCommunicationFirst;
+  const size_t count = receive ? rpdoCount_ : tpdoCount_;
+  for (size_t i = 0; i < count; ++i) {
+    PdoChannel* channel = receive ? static_cast<PdoChannel*>(&rpdos_[i]) : &tpdos_[i];
+    if (channel->communicationIndex() == communicationIndex) {
+      return channel;
     }
   }
   return nullptr;
@@ -182,22 +198,14 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   const auto communicationIndex = static_cast<uint16_t>(mapping ? index - kMappingOffset : index);
   const bool receive = index < kTpdoCommunicationFirst;
   // The channel the parameter belongs to: an RPDO's or a TPDO's, or none (a plain entry).
-  RpdoChannel* rpdo = receive ? findRpdo(communicationIndex) : nullptr;
-  TpdoChannel* tpdo = receive ? nullptr : findTpdo(communicationIndex);
-  bool valid = false;
-  uint32_t canId = 0;
-  if (rpdo != nullptr) {
-    valid = rpdo->valid();
-    canId = rpdo->canId();
-  } else if (tpdo != nullptr) {
-    valid = tpdo->valid();
-    canId = tpdo->canId();
-  } else {
+  PdoChannel* channel = findChannel(communicationIndex);
+  if (channel == nullptr) {
     return dictionary.write(ref, data, length);
   }
   const AbortCode verdict =
-      mapping ? checkMappingWrite(receive, valid, ref, data, length)
-              : checkCommunicationWrite(receive, valid, canId, ref.subIndex(), data, length);
+      mapping ? checkMappingWrite(receive, channel->valid(), ref, data, length)
+              : checkCommunicationWrite(receive, channel->valid(), channel->canId(), ref.subIndex(),
+                                        data, length);
   if (verdict != AbortCode::kNone) {
     return verdict;
   }
@@ -205,19 +213,7 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   if (written != AbortCode::kNone) {
     return written;
   }
-  bool resolved = true;
-  if (rpdo != nullptr) {
-    resolved = rpdo->configure(context_);
-  }
-  if (tpdo != nullptr) {
-    resolved = tpdo->configure(context_);
-    if (running_) {
-      tpdo->restart(context_, context_.clock.now);
-    }
-  }
-  if (!resolved) {
-    ++unresolvableMappings_;
-  }
+  configureChannel(*channel, receive);
   context_.routes.invalidate();
   return AbortCode::kNone;
 }

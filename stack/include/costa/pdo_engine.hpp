@@ -105,7 +105,11 @@ class PdoEngine : public ObjectHook {
                   size_t length) noexcept override;
 
  private:
-  RpdoChannel* findRpdo(uint16_t communicationIndex) noexcept;
+  /// The RPDO or TPDO whose communication parameter is at `communicationIndex`, or nullptr.
+  PdoChannel* findChannel(uint16_t communicationIndex) noexcept;
+  /// Configures `channel` (an RPDO's when `receive`, else a TPDO's) from its parameters; a
+  /// TPDO restarts when running, else stops. Counts a mapping that cannot be resolved.
+  void configureChannel(PdoChannel& channel, bool receive) noexcept;
   TpdoChannel* findTpdo(uint16_t communicationIndex) noexcept;
   AbortCode checkCommunicationWrite(bool receive, bool currentlyValid, uint32_t currentCanId,
                                     uint8_t subIndex, const uint8_t* data,
