@@ -67,7 +67,7 @@ size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdo
 
 bool resolvePdoMapping(PdoContext& context, uint16_t communicationIndex, PdoDirection direction,
                        PdoMap* map) noexcept {
-  uint32_t values[PdoMap::kMaxEntries] = {};
+  uint32_t values[PdoMap::kMaxEntries];
   const size_t count = readMappingValues(
       context.access.dictionary(), context.profile.staticMappings, communicationIndex, values);
   return map->resolve(context.access, values, count, direction) == AbortCode::kNone;

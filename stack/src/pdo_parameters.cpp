@@ -80,7 +80,7 @@ AbortCode PdoEngine::checkMappingWrite(bool receive, bool pdoValid, const od::En
   if (count > PdoMap::kMaxEntries || count >= dictionary.entryCount(*ref.object)) {
     return AbortCode::kMappingTooLong;
   }
-  uint32_t values[PdoMap::kMaxEntries] = {};
+  uint32_t values[PdoMap::kMaxEntries];
   for (uint8_t i = 0; i < count; ++i) {
     values[i] = dictionary.readUnsigned32(index, static_cast<uint8_t>(i + 1U), 0);
     if (values[i] == 0U) {
