@@ -63,8 +63,9 @@ class PdoMap {
   bool contains(const od::EntryRef& ref) const noexcept;
 
   /// Copies the mapped values into `out` (bytes() bytes), all in one call, so a frame never
-  /// mixes two writes of an entry. (Built for size, every mapping takes the one general loop.)
-  COSTA_SHARED_INLINE void pack(const ObjectAccess& access, uint8_t* out) const noexcept {
+  /// mixes two writes of an entry. (Built for size, every mapping takes the one general loop:
+  /// pack() is then a call of packThroughAccess(), inlined, not a function of its own.)
+  void pack(const ObjectAccess& access, uint8_t* out) const noexcept {
     if (!kExpandFastPaths || (accessMask_ | markMask_) != 0U) {
       packThroughAccess(access, out);
       return;
