@@ -141,18 +141,6 @@ Microseconds TpdoChannel::nextDeadline(Microseconds now) const noexcept {
   return event_ && inhibitUntil_ == kNever ? atOnce(now) : next;
 }
 
-void TpdoChannel::restartTimers(PdoContext& context, Microseconds now) noexcept {
-  if (!eventDriven()) {
-    return;  // the inhibit time and the event timer are those of event-driven transmission
-  }
-  inhibitUntil_ = inhibit_ == 0U ? kNever : at(now, inhibit_ * kHundredMicroseconds);
-  context.clock.schedule(inhibitUntil_);
-  if (eventTimerMs_ != 0U) {
-    eventDeadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
-    context.clock.schedule(eventDeadline_);
-  }
-}
-
 void TpdoChannel::send(PdoContext& context, const uint8_t* sample, Microseconds now,
                        Microseconds expiry) noexcept {
   CanFrame frame;
@@ -164,7 +152,15 @@ void TpdoChannel::send(PdoContext& context, const uint8_t* sample, Microseconds 
     map_.pack(context.access, frame.data);
   }
   context.tx.send(frame, expiry);
-  restartTimers(context, now);
+  if (!eventDriven()) {
+    return;  // the inhibit time and the event timer are those of event-driven transmission
+  }
+  inhibitUntil_ = inhibit_ == 0U ? kNever : at(now, inhibit_ * kHundredMicroseconds);
+  context.clock.schedule(inhibitUntil_);
+  if (eventTimerMs_ != 0U) {
+    eventDeadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
+    context.clock.schedule(eventDeadline_);
+  }
 }
 
 }  // namespace costa

@@ -88,13 +88,12 @@ class TpdoChannel : public PdoChannel {
     context.tx.send(frame, expiry);
   }
   /// Sends `sample` (the values sampled at a SYNC, type 252), or with nullptr the current
-  /// values, and restarts the inhibit time and the event timer.
+  /// values, and restarts the inhibit time and the event timer of an event-driven PDO.
   void send(PdoContext& context, const uint8_t* sample, Microseconds now,
             Microseconds expiry) noexcept;
   void sendCurrent(PdoContext& context, Microseconds now, Microseconds expiry) noexcept {
     send(context, nullptr, now, expiry);
   }
-  void restartTimers(PdoContext& context, Microseconds now) noexcept;
   /// Keeps syncPeriod_ true to the state it summarises.
   void updateSyncPeriod() noexcept {
     syncPeriod_ = running_ && valid_ && type_ - 1U < 240U && !waitingForStart_ ? type_ : 0U;
