@@ -2,23 +2,6 @@
 
 namespace costa {
 
-PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept {
-  PdoCobId cob;
-  const bool bit31 = (value & 0x80000000U) != 0U;
-  const bool bit30 = (value & 0x40000000U) != 0U;
-  if (polarity == PdoCobIdPolarity::kCia301) {
-    cob.valid = !bit31;
-    cob.rtrAllowed = !bit30;
-  } else {
-    cob.valid = bit31;
-    cob.rtrAllowed = bit30;
-  }
-  cob.extended = (value & 0x20000000U) != 0U;
-  cob.canId = value & (cob.extended ? 0x1FFFFFFFU : 0x7FFU);
-  cob.reservedBits = !cob.extended && (value & 0x1FFFF800U) != 0U;
-  return cob;
-}
-
 bool PdoChannel::readCommunication(const PdoContext& context) noexcept {
   const od::ObjectDictionary& dictionary = context.access.dictionary();
   const PdoCobId cob = decodePdoCobId(dictionary.readUnsigned32(index_, 1, 0x80000000U),

@@ -43,7 +43,24 @@ struct PdoCobId {
   bool reservedBits = false;  ///< bits 28..11 set in an 11-bit COB-ID
 };
 
-PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept;
+/// Inline: each use keeps only the fields it reads, and where the polarity is a constant (a
+/// build without quirk profiles) the test of it folds away.
+inline PdoCobId decodePdoCobId(uint32_t value, PdoCobIdPolarity polarity) noexcept {
+  PdoCobId cob;
+  const bool bit31 = (value & 0x80000000U) != 0U;
+  const bool bit30 = (value & 0x40000000U) != 0U;
+  if (polarity == PdoCobIdPolarity::kCia301) {
+    cob.valid = !bit31;
+    cob.rtrAllowed = !bit30;
+  } else {
+    cob.valid = bit31;
+    cob.rtrAllowed = bit30;
+  }
+  cob.extended = (value & 0x20000000U) != 0U;
+  cob.canId = value & (cob.extended ? 0x1FFFFFFFU : 0x7FFU);
+  cob.reservedBits = !cob.extended && (value & 0x1FFFF800U) != 0U;
+  return cob;
+}
 
 /// What an RPDO and a TPDO channel share: their communication object and the parameters both
 /// read from it (COB-ID, transmission type, event timer). The first eight bytes of either.
