@@ -118,14 +118,15 @@ class PdoEngine : public ObjectHook {
                               const uint8_t* data, size_t length) const noexcept;
 
   PdoContext& context_;
+  // The two flags first, within reach of Thumb-1's short byte offsets.
+  bool running_ = false;
+  bool holding_ = false;  ///< some RPDO holds data for the next SYNC
   RpdoChannel* rpdos_;
   size_t rpdoCapacity_;
   size_t rpdoCount_ = 0;
   TpdoChannel* tpdos_;
   size_t tpdoCapacity_;
   size_t tpdoCount_ = 0;
-  bool running_ = false;
-  bool holding_ = false;  ///< some RPDO holds data for the next SYNC
   uint32_t rpdosRefused_ = 0;
   uint32_t unresolvableMappings_ = 0;
 };
