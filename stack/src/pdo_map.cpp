@@ -23,9 +23,10 @@ bool isDummy(uint16_t index) noexcept {
   return index >= kFirstDummy && index <= kLastDummy;
 }
 
-// checkEntry()'s checks of `value`; `*ref` is its entry (not valid for 0 or a dummy entry).
-AbortCode checkValue(const od::ObjectDictionary& dictionary, uint32_t value, PdoDirection direction,
-                     od::EntryRef* ref) noexcept {
+}  // namespace
+
+AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t value,
+                             PdoDirection direction, od::EntryRef* ref) noexcept {
   if (value == 0U) {
     return AbortCode::kNone;
   }
@@ -53,14 +54,6 @@ AbortCode checkValue(const od::ObjectDictionary& dictionary, uint32_t value, Pdo
   return AbortCode::kNone;
 }
 
-}  // namespace
-
-AbortCode PdoMap::checkEntry(const od::ObjectDictionary& dictionary, uint32_t value,
-                             PdoDirection direction) noexcept {
-  od::EntryRef ref;
-  return checkValue(dictionary, value, direction, &ref);
-}
-
 AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, size_t count,
                           PdoDirection direction) noexcept {
   clear();
@@ -74,7 +67,7 @@ AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, si
   const od::ObjectDictionary& dictionary = access.dictionary();
   for (size_t i = 0; i < count; ++i) {
     od::EntryRef ref;
-    const AbortCode verdict = checkValue(dictionary, values[i], direction, &ref);
+    const AbortCode verdict = checkEntry(dictionary, values[i], direction, &ref);
     if (verdict != AbortCode::kNone) {
       clear();  // refused: empty, as before the first entry
       return verdict;

@@ -42,7 +42,13 @@ class PdoMap {
   /// for RPDOs only, and only those the dictionary's dummyUsage (its EDS's [DummyUsage]) names;
   /// the others are kNotMappable. A value of 0 is accepted (an unused entry). O(log objects).
   static AbortCode checkEntry(const od::ObjectDictionary& dictionary, uint32_t value,
-                              PdoDirection direction) noexcept;
+                              PdoDirection direction) noexcept {
+    od::EntryRef ref;
+    return checkEntry(dictionary, value, direction, &ref);
+  }
+  /// The same, and `*ref` locates the entry (left as it was for 0 or a dummy entry).
+  static AbortCode checkEntry(const od::ObjectDictionary& dictionary, uint32_t value,
+                              PdoDirection direction, od::EntryRef* ref) noexcept;
 
   /// Resolves `count` mapping values; on failure the map is left empty and the abort code is
   /// returned (checkEntry's codes, kMappingTooLong beyond 64 bits). O(count x log objects).
