@@ -9,14 +9,10 @@ namespace {
 constexpr uint16_t kFirstDummy = 0x0002;  // INTEGER8
 constexpr uint16_t kLastDummy = 0x0007;   // UNSIGNED32
 
-uint8_t dummyBytes(uint16_t index) noexcept {
-  switch (index) {
-    case 0x0002:
-    case 0x0005: return 1;
-    case 0x0003:
-    case 0x0006: return 2;
-    default: return 4;  // 0x0004, 0x0007
-  }
+// The length in bytes of dummy entry `index` (INTEGER8..INTEGER32, UNSIGNED8..UNSIGNED32): 1, 2,
+// 4, 1, 2, 4, one nibble each from the lowest.
+uint32_t dummyBytes(uint16_t index) noexcept {
+  return (0x421421U >> ((index - kFirstDummy) * 4U)) & 0xFU;
 }
 
 bool isDummy(uint16_t index) noexcept {
