@@ -4,10 +4,10 @@ namespace costa {
 
 bool PdoChannel::readCommunication(const PdoContext& context) noexcept {
   const od::ObjectDictionary& dictionary = context.access.dictionary();
-  const PdoCobId cob = decodePdoCobId(dictionary.readUnsigned32(index_, 1, 0x80000000U),
-                                      context.profile.cobIdPolarity);
+  const uint32_t value = dictionary.readUnsigned32(index_, 1, 0x80000000U);
+  const PdoCobId cob = decodePdoCobId(value, context.profile.cobIdPolarity);
   valid_ = cob.valid && !cob.extended;
-  canId_ = static_cast<uint16_t>(cob.canId & 0x7FFU);
+  canId_ = static_cast<uint16_t>(value & 0x7FFU);
   type_ = static_cast<uint8_t>(dictionary.readUnsigned32(index_, 2, 255));
   eventTimerMs_ = static_cast<uint16_t>(dictionary.readUnsigned32(index_, 5, 0));
   return cob.rtrAllowed;
