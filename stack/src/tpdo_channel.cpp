@@ -19,34 +19,21 @@ bool TpdoChannel::resolveMapping(PdoContext& context) noexcept {
   return resolvePdoMapping(context, index_, PdoDirection::kTransmit, &map_);
 }
 
-void TpdoChannel::start(PdoContext& context, Microseconds now, bool initialEvent) noexcept {
+void TpdoChannel::begin(PdoContext& context, Microseconds now, bool event,
+                        Microseconds inhibitEnd) noexcept {
   running_ = true;
   syncCount_ = 0;
   waitingForStart_ = syncStart_ != 0U;
   updateSyncPeriod();
   sampledValid_ = false;
+  event_ = event && takesEvents();
   inhibitUntil_ = kNever;
-  event_ = false;
   eventDeadline_ = kNever;
   if (eventDriven()) {
-    event_ = initialEvent;
+    inhibitUntil_ = inhibitEnd;
     if (eventTimerMs_ != 0U) {
       eventDeadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
     }
-    context.clock.schedule(nextDeadline(now));
-  }
-}
-
-void TpdoChannel::restart(PdoContext& context, Microseconds now) noexcept {
-  // What a PDO made not valid had waiting is gone (and an old inhibit time would not expire).
-  const bool pending = event_ && valid_;
-  const Microseconds inhibitEnd = valid_ ? inhibitUntil_ : kNever;
-  start(context, now, false);
-  if (takesEvents()) {
-    event_ = pending;  // type 0: sent at the next SYNC still
-  }
-  if (eventDriven()) {
-    inhibitUntil_ = inhibitEnd;  // the transmission before the write still inhibits the next
     context.clock.schedule(nextDeadline(now));
   }
 }

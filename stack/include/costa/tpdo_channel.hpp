@@ -39,10 +39,17 @@ class TpdoChannel : public PdoChannel {
 
   /// Entering operational: SYNC counting restarts, the event timer starts, and an event-driven
   /// PDO is sent once when `initialEvent`.
-  void start(PdoContext& context, Microseconds now, bool initialEvent) noexcept;
+  void start(PdoContext& context, Microseconds now, bool initialEvent) noexcept {
+    begin(context, now, initialEvent && eventDriven(), kNever);
+  }
   /// Reconfigured while operational (a parameter written): starts again like start(), but an
   /// event still waiting (while the PDO stays valid) and a running inhibit time are kept.
-  void restart(PdoContext& context, Microseconds now) noexcept;
+  void restart(PdoContext& context, Microseconds now) noexcept {
+    // What a PDO made not valid had waiting is gone (and an old inhibit time would not expire);
+    // type 0 sends what waits at the next SYNC still, and the transmission before the write
+    // still inhibits the next.
+    begin(context, now, event_ && valid_, valid_ ? inhibitUntil_ : kNever);
+  }
   void stop() noexcept;
 
   /// A SYNC with `counter` (0 when the SYNC carries none). Synchronous PDOs are sent with
@@ -79,6 +86,10 @@ class TpdoChannel : public PdoChannel {
  private:
   void onOtherSync(PdoContext& context, uint8_t counter, Microseconds now,
                    Microseconds expiry) noexcept;
+  /// What start() and restart() share: running from `now`, with `event` waiting (for a type
+  /// that takes events) and, for an event-driven PDO, an inhibit time that ends at `inhibitEnd`
+  /// (kNever: none) and the event timer started.
+  void begin(PdoContext& context, Microseconds now, bool event, Microseconds inhibitEnd) noexcept;
   /// Sends the current values of a synchronous PDO (no inhibit time, no event timer).
   COSTA_HOT_INLINE void sendNow(PdoContext& context, Microseconds expiry) noexcept {
     CanFrame frame;
