@@ -202,10 +202,8 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   if (channel == nullptr) {
     return dictionary.write(ref, data, length);
   }
-  const AbortCode verdict =
-      mapping ? checkMappingWrite(receive, channel->valid(), ref, data, length)
-              : checkCommunicationWrite(receive, channel->valid(), channel->canId(), ref.subIndex(),
-                                        data, length);
+  const AbortCode verdict = mapping ? checkMappingWrite(*channel, receive, ref, data, length)
+                                    : checkCommunicationWrite(*channel, receive, ref, data, length);
   if (verdict != AbortCode::kNone) {
     return verdict;
   }

@@ -29,11 +29,13 @@ constexpr uint8_t kLastSyncStartValue = 240;
 
 }  // namespace
 
-AbortCode PdoEngine::checkCommunicationWrite(bool receive, bool currentlyValid,
-                                             uint32_t currentCanId, uint8_t subIndex,
-                                             const uint8_t* data, size_t length) const noexcept {
+AbortCode PdoEngine::checkCommunicationWrite(const PdoChannel& channel, bool receive,
+                                             const od::EntryRef& ref, const uint8_t* data,
+                                             size_t length) const noexcept {
   const PdoProfile& profile = context_.profile;
-  switch (subIndex) {
+  const bool currentlyValid = channel.valid();
+  const uint32_t currentCanId = channel.canId();
+  switch (ref.subIndex()) {
     case 1: return checkCobIdWrite(profile, receive, currentlyValid, currentCanId, data, length);
     case 2: {
       if (length < 1U) {
@@ -58,9 +60,10 @@ AbortCode PdoEngine::checkCommunicationWrite(bool receive, bool currentlyValid,
   }
 }
 
-AbortCode PdoEngine::checkMappingWrite(bool receive, bool pdoValid, const od::EntryRef& ref,
-                                       const uint8_t* data, size_t length) const noexcept {
-  if (pdoValid) {
+AbortCode PdoEngine::checkMappingWrite(const PdoChannel& channel, bool receive,
+                                       const od::EntryRef& ref, const uint8_t* data,
+                                       size_t length) const noexcept {
+  if (channel.valid()) {
     return AbortCode::kCannotStoreState;  // mapping changes only while the PDO is invalid
   }
   const od::ObjectDictionary& dictionary = context_.access.dictionary();

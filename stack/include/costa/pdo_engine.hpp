@@ -111,10 +111,12 @@ class PdoEngine : public ObjectHook {
   /// TPDO restarts when running, else stops. Counts a mapping that cannot be resolved.
   void configureChannel(PdoChannel& channel, bool receive) noexcept;
   TpdoChannel* findTpdo(uint16_t communicationIndex) noexcept;
-  AbortCode checkCommunicationWrite(bool receive, bool currentlyValid, uint32_t currentCanId,
-                                    uint8_t subIndex, const uint8_t* data,
+  /// The refusal of a write to `ref`, a parameter of `channel` (an RPDO's when `receive`), or
+  /// kNone: a communication parameter's, a mapping parameter's.
+  AbortCode checkCommunicationWrite(const PdoChannel& channel, bool receive,
+                                    const od::EntryRef& ref, const uint8_t* data,
                                     size_t length) const noexcept;
-  AbortCode checkMappingWrite(bool receive, bool pdoValid, const od::EntryRef& ref,
+  AbortCode checkMappingWrite(const PdoChannel& channel, bool receive, const od::EntryRef& ref,
                               const uint8_t* data, size_t length) const noexcept;
 
   PdoContext& context_;
