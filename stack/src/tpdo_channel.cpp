@@ -88,10 +88,8 @@ void TpdoChannel::onRemoteRequest(PdoContext& context, Microseconds now) noexcep
     return;
   }
   if (type_ == 252U) {
-    if (!sampledValid_) {
-      map_.pack(context.access, sampled_);
-    }
-    send(context, sampled_, now, kNever);
+    // The values sampled at the last SYNC, or, before there is one, the current values.
+    send(context, sampledValid_ ? sampled_ : nullptr, now, kNever);
   } else if (eventDriven() && inhibitUntil_ != kNever && !reached(now, inhibitUntil_)) {
     // CiA 301: the inhibit time is the least interval between transmissions of an event-driven
     // TPDO, answers included: within it the answer waits as an event does (process()).
