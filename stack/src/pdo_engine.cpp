@@ -117,7 +117,8 @@ void PdoEngine::onSync(uint8_t counter, Microseconds now, Microseconds windowEnd
   }
   holding_ = false;
   for (size_t i = 0; i < tpdoCount_; ++i) {
-    if (tpdos_[i].synchronous()) {
+    // (built for size, every TPDO is asked: onSync() of one that is not synchronous does nothing)
+    if (!kExpandFastPaths || tpdos_[i].synchronous()) {
       tpdos_[i].onSync(context_, counter, now, windowEnd);
     }
   }
