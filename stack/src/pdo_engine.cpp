@@ -111,7 +111,8 @@ void PdoEngine::onSync(uint8_t counter, Microseconds now, Microseconds windowEnd
     return;
   }
   for (size_t i = 0; holding_ && i < rpdoCount_; ++i) {
-    if (rpdos_[i].holding() && !rpdos_[i].onSync(context_)) {
+    // (built for size, every RPDO is asked: onSync() of one that holds nothing does nothing)
+    if ((!kExpandFastPaths || rpdos_[i].holding()) && !rpdos_[i].onSync(context_)) {
       ++rpdosRefused_;
     }
   }
