@@ -107,7 +107,7 @@ bool RpdoChannel::applyChecked(PdoContext& context, const uint8_t* data) noexcep
 }
 
 void RpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
-  if (!raised(kTimedOut) && reached(now, deadline_)) {
+  if (reached(now, deadline_)) {  // (never while kTimedOut: deadline_ is kNever then)
     deadline_ = kNever;
     setCondition(context, kTimedOut, true);
     const uint16_t index = index_;

@@ -90,7 +90,7 @@ class RpdoChannel : public PdoChannel {
   /// Deadline monitoring with the event timer (sub-index 5): EMCY 0x8250 when no PDO arrived
   /// within it after the first one.
   void process(PdoContext& context, Microseconds now) noexcept;
-  Microseconds nextDeadline() const noexcept { return raised(kTimedOut) ? kNever : deadline_; }
+  Microseconds nextDeadline() const noexcept { return deadline_; }
   /// Leaving operational: held data and monitoring stop. A missed deadline stays an error
   /// (EMCY 0x8250) until a PDO arrives or the PDO is configured again.
   void stop() noexcept;
@@ -143,7 +143,8 @@ class RpdoChannel : public PdoChannel {
   uint8_t answer_ = 0;
   /// The answer of the PDO being taken raised its TPDO's event (none was pending already).
   bool answerSignalled_ = false;
-  /// kNever from bind() on (set there, so that an array of channels is all zeros at first).
+  /// kNever from bind() on (set there, so that an array of channels is all zeros at first), and
+  /// while the deadline is missed (kTimedOut) or not monitored.
   Microseconds deadline_ = 0;
   PdoMap map_;
   uint8_t held_[PdoMap::kMaxBytes] = {};
