@@ -46,10 +46,12 @@ void RpdoChannel::clearConditions(PdoContext& context) noexcept {
 }
 
 void RpdoChannel::setCondition(PdoContext& context, Condition condition, bool on) noexcept {
-  // By condition bit: 1, 2, 4 -> 0, 1, 2.
-  constexpr uint16_t kCodes[] = {kEmcyLengthShort, kEmcyLengthLong, kEmcyTimeout};
-  static_assert(kTooShort == 1U && kTooLong == 2U && kTimedOut == 4U, "kCodes by bit >> 1");
-  const uint16_t code = kCodes[condition >> 1U];
+  // By condition bit: 1, 2, 4 -> 0x8210, 0x8220, 0x8250 (0x8200 + 0x10 x 1, 2, 5).
+  static_assert(kTooShort == 1U && kTooLong == 2U && kTimedOut == 4U &&
+                    kEmcyLengthShort == 0x8210U && kEmcyLengthLong == 0x8220U &&
+                    kEmcyTimeout == 0x8250U,
+                "codes by bit");
+  const auto code = static_cast<uint16_t>(0x8200U + ((condition + (condition >> 2U)) << 4U));
   if (on) {
     raised_ |= condition;
     context.emcy.raise(code, source(), kErrorCommunication);
