@@ -196,8 +196,10 @@ TpdoChannel* PdoEngine::findTpdo(uint16_t communicationIndex) noexcept {
 AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                            const uint8_t* data, size_t length) noexcept {
   const uint16_t index = ref.index();
-  const bool mapping = (index >= 0x1600U && index <= 0x17FFU) || index >= 0x1A00U;
-  const auto communicationIndex = static_cast<uint16_t>(mapping ? index - kMappingOffset : index);
+  // 0x1400..0x1BFF (kFirst..kLast, the range the hook serves): a mapping parameter is 0x200
+  // above its communication parameter, 0x1600..0x17FF or 0x1A00..0x1BFF.
+  const bool mapping = (index & kMappingOffset) != 0U;
+  const auto communicationIndex = static_cast<uint16_t>(index & ~kMappingOffset);
   const bool receive = index < kTpdoCommunicationFirst;
   // The channel the parameter belongs to: an RPDO's or a TPDO's, or none (a plain entry).
   PdoChannel* channel = findChannel(communicationIndex);
