@@ -6,6 +6,12 @@
 namespace costa {
 namespace {
 
+// The UNSIGNED32 a write carries (built for size, a call of the dictionary's loader, not four
+// byte loads inline at each use).
+uint32_t writtenU32(const uint8_t* data) noexcept {
+  return static_cast<uint32_t>(loadLittleEndian(data, 4));
+}
+
 // Sub-index 1, the COB-ID: the rules every 11-bit COB-ID shares (cob::acceptableCobId(): no
 // 29-bit CAN-ID, no bits 11..28, a CAN-ID in use not restricted, a valid PDO made not valid
 // before its CAN-ID changes), or, where the device gives its PDOs a range of CAN-IDs, that range
@@ -15,7 +21,7 @@ AbortCode checkCobIdWrite(const PdoProfile& profile, bool receive, bool currentl
   if (length != 4U) {
     return AbortCode::kNone;  // the dictionary reports the length error
   }
-  const uint32_t value = loadU32(data);
+  const uint32_t value = writtenU32(data);
   const PdoCobId cob = decodePdoCobId(value, profile.cobIdPolarity);
   const CanIdRange range = receive ? profile.rpdoCanIds : profile.tpdoCanIds;
   const bool acceptable = cob::acceptableCobId(value, cob.valid && !range.restricts(),
@@ -73,7 +79,7 @@ AbortCode PdoEngine::checkMappingWrite(const PdoChannel& channel, bool receive,
     if (dictionary.readUnsigned32(index, 0, 0) != 0U) {
       return AbortCode::kCannotStoreState;  // disable the mapping (sub-index 0 = 0) first
     }
-    return length == 4U ? PdoMap::checkEntry(dictionary, loadU32(data), direction)
+    return length == 4U ? PdoMap::checkEntry(dictionary, writtenU32(data), direction)
                         : AbortCode::kNone;
   }
   if (length != 1U) {
