@@ -105,9 +105,12 @@ class TpdoChannel : public PdoChannel {
   void sendCurrent(PdoContext& context, Microseconds now, Microseconds expiry) noexcept {
     send(context, nullptr, now, expiry);
   }
-  /// Keeps syncPeriod_ true to the state it summarises.
+  /// Keeps syncPeriod_ true to the state it summarises (built for size, onSync() does not look
+  /// at it: it stays 0).
   void updateSyncPeriod() noexcept {
-    syncPeriod_ = running_ && valid_ && type_ - 1U < 240U && !waitingForStart_ ? type_ : 0U;
+    if constexpr (kExpandFastPaths) {
+      syncPeriod_ = running_ && valid_ && type_ - 1U < 240U && !waitingForStart_ ? type_ : 0U;
+    }
   }
 
   uint16_t inhibit_ = 0;  ///< 100 us units (sub-index 3)
