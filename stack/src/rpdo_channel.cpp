@@ -34,11 +34,6 @@ void RpdoChannel::takeBackAnswer(PdoContext& context) const noexcept {
   context.tpdos[answer_ - 1U].withdrawEvent();
 }
 
-void RpdoChannel::stop() noexcept {
-  holding_ = false;
-  deadline_ = kNever;
-}
-
 void RpdoChannel::clearConditions(PdoContext& context) noexcept {
   setCondition(context, kTimedOut, false);
   setCondition(context, kTooShort, false);

@@ -93,7 +93,10 @@ class RpdoChannel : public PdoChannel {
   Microseconds nextDeadline() const noexcept { return deadline_; }
   /// Leaving operational: held data and monitoring stop. A missed deadline stays an error
   /// (EMCY 0x8250) until a PDO arrives or the PDO is configured again.
-  void stop() noexcept;
+  void stop() noexcept {
+    holding_ = false;
+    deadline_ = kNever;
+  }
 
  private:
   /// Writes `data` into the mapped entries, with the listeners' notifications around it. A plain
