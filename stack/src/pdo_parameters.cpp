@@ -41,29 +41,23 @@ AbortCode PdoEngine::checkCommunicationWrite(const PdoChannel& channel, bool rec
   const PdoProfile& profile = context_.profile;
   const bool currentlyValid = channel.valid();
   const uint32_t currentCanId = channel.canId();
-  switch (ref.subIndex()) {
-    case 1: return checkCobIdWrite(profile, receive, currentlyValid, currentCanId, data, length);
-    case 2: {
-      if (length < 1U) {
-        return AbortCode::kNone;
-      }
-      const uint8_t type = data[0];
-      const bool reserved =
-          length > 1U && loadLittleEndian(data, length) > 0xFFU;  // wider types (UNSIGNED32)
-      if (reserved || (type > 240U && type < (receive ? 254U : 252U))) {
-        return AbortCode::kInvalidValue;
-      }
-      return AbortCode::kNone;
-    }
-    case 6:  // SYNC start value: 0 (not used) or 1..240; 241..255 are reserved
-      if (!receive && length >= 1U && data[0] > kLastSyncStartValue) {
-        return AbortCode::kInvalidValue;
-      }
-      return currentlyValid && !receive ? AbortCode::kInvalidValue : AbortCode::kNone;
-    case 3:  // inhibit time
-      return currentlyValid && !receive ? AbortCode::kInvalidValue : AbortCode::kNone;
-    default: return AbortCode::kNone;
+  const uint8_t subIndex = ref.subIndex();
+  if (subIndex == 1U) {
+    return checkCobIdWrite(profile, receive, currentlyValid, currentCanId, data, length);
   }
+  bool refused = false;
+  if (subIndex == 2U && length >= 1U) {
+    // The type: 241..251 (RPDO: 241..253) are reserved, and so is what a wider type
+    // (UNSIGNED32) adds above 255.
+    const uint64_t type = loadLittleEndian(data, length);
+    refused = type > 240U && (type > 0xFFU || type < (receive ? 254U : 252U));
+  } else if (subIndex == 3U || subIndex == 6U) {
+    // The inhibit time and the SYNC start value of a TPDO change only while it is not valid;
+    // SYNC start values 241..255 are reserved (0: not used, 1..240).
+    refused = !receive &&
+              (currentlyValid || (subIndex == 6U && length >= 1U && data[0] > kLastSyncStartValue));
+  }
+  return refused ? AbortCode::kInvalidValue : AbortCode::kNone;
 }
 
 AbortCode PdoEngine::checkMappingWrite(const PdoChannel& channel, bool receive,
