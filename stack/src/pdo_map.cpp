@@ -141,19 +141,6 @@ void PdoMap::packThroughAccess(const ObjectAccess& access, uint8_t* out) const n
   }
 }
 
-AbortCode PdoMap::check(ObjectAccess& access, const uint8_t* data) const noexcept {
-  for (size_t i = 0; i < count_; ++i) {
-    if (needsAccess(i)) {
-      const AbortCode verdict = access.check(locate(access, i), data, slots_[i].length);
-      if (verdict != AbortCode::kNone) {
-        return verdict;
-      }
-    }
-    data += slots_[i].length;
-  }
-  return AbortCode::kNone;
-}
-
 AbortCode PdoMap::writeThroughAccess(ObjectAccess& access, const uint8_t* data) const noexcept {
   auto* values = static_cast<uint8_t*>(access.dictionary().values());
   // Where each entry was written (nullptr: not in RAM, or a dummy entry) and what it held before,

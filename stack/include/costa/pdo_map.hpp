@@ -85,7 +85,18 @@ class PdoMap {
 
   /// First phase of an RPDO: checks every entry of `data` (at least bytes() bytes) as its hook
   /// or the dictionary would, writing nothing. The first refusal's abort code.
-  AbortCode check(ObjectAccess& access, const uint8_t* data) const noexcept;
+  AbortCode check(ObjectAccess& access, const uint8_t* data) const noexcept {
+    for (size_t i = 0; i < count_; ++i) {
+      if (needsAccess(i)) {
+        const AbortCode verdict = access.check(locate(access, i), data, slots_[i].length);
+        if (verdict != AbortCode::kNone) {
+          return verdict;
+        }
+      }
+      data += slots_[i].length;
+    }
+    return AbortCode::kNone;
+  }
   /// Second phase: writes every entry. When an entry's hook refuses (a hook that checks only in
   /// write()), the entries written so far, the refusing one included, get back the bytes they
   /// held before the PDO (an entry mapped twice too) and the refusal is returned: an RPDO is
