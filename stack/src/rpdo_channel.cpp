@@ -82,14 +82,6 @@ void RpdoChannel::restartDeadline(PdoContext& context, Microseconds now) noexcep
   setCondition(context, kTimedOut, false);
 }
 
-bool RpdoChannel::onSync(PdoContext& context) noexcept {
-  if (!holding_) {
-    return true;
-  }
-  holding_ = false;
-  return apply(context, held_);
-}
-
 bool RpdoChannel::applyChecked(PdoContext& context, const uint8_t* data) noexcept {
   // (built for size, a plain mapping comes here too: nothing of it needs a check)
   if ((kExpandFastPaths || !map_.plain()) && map_.check(context.access, data) != AbortCode::kNone) {

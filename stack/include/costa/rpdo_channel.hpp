@@ -85,7 +85,13 @@ class RpdoChannel : public PdoChannel {
     }
   }
   /// Applies the data held since the previous SYNC. False when an entry was refused.
-  bool onSync(PdoContext& context) noexcept;
+  bool onSync(PdoContext& context) noexcept {
+    if (!holding_) {
+      return true;
+    }
+    holding_ = false;
+    return apply(context, held_);
+  }
   bool holding() const noexcept { return holding_; }
   /// Deadline monitoring with the event timer (sub-index 5): EMCY 0x8250 when no PDO arrived
   /// within it after the first one.
