@@ -11,7 +11,10 @@ namespace costa {
 bool RpdoChannel::configure(PdoContext& context) noexcept {
   (void)readCommunication(context);
   stop();
-  clearConditions(context);
+  // The EMCY conditions the old parameters raised no longer apply.
+  setCondition(context, kTimedOut, false);
+  setCondition(context, kTooShort, false);
+  setCondition(context, kTooLong, false);
   return resolveMapping(context);
 }
 
@@ -32,12 +35,6 @@ void RpdoChannel::updateQuietDlc() noexcept {
 
 void RpdoChannel::takeBackAnswer(PdoContext& context) const noexcept {
   context.tpdos[answer_ - 1U].withdrawEvent();
-}
-
-void RpdoChannel::clearConditions(PdoContext& context) noexcept {
-  setCondition(context, kTimedOut, false);
-  setCondition(context, kTooShort, false);
-  setCondition(context, kTooLong, false);
 }
 
 void RpdoChannel::setCondition(PdoContext& context, Condition condition, bool on) noexcept {

@@ -128,8 +128,6 @@ class RpdoChannel : public PdoChannel {
   }
   void takeBackAnswer(PdoContext& context) const noexcept;
   void restartDeadline(PdoContext& context, Microseconds now) noexcept;
-  /// Clears the EMCY conditions this PDO raised (reconfigured: they no longer apply).
-  void clearConditions(PdoContext& context) noexcept;
   /// The EMCY conditions a PDO raises, one bit each of raised_.
   enum Condition : uint8_t { kTooShort = 1, kTooLong = 2, kTimedOut = 4 };
   /// Raises the condition's EMCY (`on`), or clears it when this PDO raised it.
