@@ -115,9 +115,12 @@ class PdoMap {
   }
 
  private:
-  /// Copies one value; the common sizes are a load and a store.
+  /// Copies one value; where speed counts, the common sizes are a load and a store (built for
+  /// size, one call of memcpy).
   static void copyValue(uint8_t* to, const uint8_t* from, size_t length) noexcept {
-    if (length == 4U) {
+    if (!kExpandFastPaths) {
+      copyBytes(to, from, length);
+    } else if (length == 4U) {
       copyBytes(to, from, 4);
     } else if (length == 1U) {
       *to = *from;
