@@ -18,12 +18,6 @@ bool RpdoChannel::configure(PdoContext& context) noexcept {
   return resolveMapping(context);
 }
 
-bool RpdoChannel::resolveMapping(PdoContext& context) noexcept {
-  const bool resolved = resolvePdoMapping(context, index_, PdoDirection::kReceive, &map_);
-  updateQuietDlc();
-  return resolved;
-}
-
 void RpdoChannel::updateQuietDlc() noexcept {
   if constexpr (kExpandFastPaths) {  // (built for size, onFrame() does not look at it)
     // cppcheck-suppress knownConditionTrueFalse ; false in a build without quirk profiles

@@ -15,10 +15,6 @@ bool TpdoChannel::configure(PdoContext& context) noexcept {
   return resolveMapping(context);
 }
 
-bool TpdoChannel::resolveMapping(PdoContext& context) noexcept {
-  return resolvePdoMapping(context, index_, PdoDirection::kTransmit, &map_);
-}
-
 void TpdoChannel::begin(PdoContext& context, Microseconds now, bool event,
                         Microseconds inhibitEnd) noexcept {
   running_ = true;

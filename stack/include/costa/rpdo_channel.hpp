@@ -43,7 +43,11 @@ class RpdoChannel : public PdoChannel {
   /// mapping could not be resolved (the PDO then carries nothing). O(entries x log objects).
   bool configure(PdoContext& context) noexcept;
   /// Resolves the mapping again (a hook was attached). Same result as configure().
-  bool resolveMapping(PdoContext& context) noexcept;
+  bool resolveMapping(PdoContext& context) noexcept {
+    const bool resolved = resolvePdoMapping(context, index_, PdoDirection::kReceive, &map_);
+    updateQuietDlc();
+    return resolved;
+  }
 
   size_t mappedBytes() const noexcept { return map_.bytes(); }
 

@@ -28,7 +28,9 @@ class TpdoChannel : public PdoChannel {
   /// not be resolved (the PDO then carries nothing). O(entries x log objects).
   bool configure(PdoContext& context) noexcept;
   /// Resolves the mapping again (a hook was attached). Same result as configure().
-  bool resolveMapping(PdoContext& context) noexcept;
+  bool resolveMapping(PdoContext& context) noexcept {
+    return resolvePdoMapping(context, index_, PdoDirection::kTransmit, &map_);
+  }
 
   bool rtrAllowed() const noexcept { return rtrAllowed_; }
   bool eventDriven() const noexcept { return type_ >= 254U; }
