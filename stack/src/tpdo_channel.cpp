@@ -51,34 +51,6 @@ bool TpdoChannel::signalEvent(NodeClock& clock) noexcept {
   return raised;
 }
 
-void TpdoChannel::onOtherSync(PdoContext& context, uint8_t counter, Microseconds now,
-                              Microseconds expiry) noexcept {
-  if (type_ == 0U) {
-    if (context.profile.tpdoType0 == TpdoType0::kEverySync || event_) {
-      event_ = false;
-      sendCurrent(context, now, expiry);
-    }
-  } else if (type_ <= 240U) {
-    if (waitingForStart_ && counter != 0U) {
-      if (counter != syncStart_) {
-        return;
-      }
-      waitingForStart_ = false;
-      updateSyncPeriod();
-      syncCount_ = 0;
-      sendCurrent(context, now, expiry);
-      return;
-    }
-    if (++syncCount_ >= type_) {
-      syncCount_ = 0;
-      sendCurrent(context, now, expiry);
-    }
-  } else if (type_ == 252U) {
-    map_.pack(context.access, sampled_);
-    sampledValid_ = true;
-  }
-}
-
 void TpdoChannel::onRemoteRequest(PdoContext& context, Microseconds now) noexcept {
   if (!running_ || !valid_ || !rtrAllowed_) {
     return;

@@ -86,8 +86,35 @@ class TpdoChannel : public PdoChannel {
   Microseconds nextDeadline(Microseconds now) const noexcept;
 
  private:
+  /// A SYNC in every case the fast path of onSync() does not take (built for size: in every
+  /// case): type 0, a cyclic type (still waiting for its SYNC start value), type 252.
   void onOtherSync(PdoContext& context, uint8_t counter, Microseconds now,
-                   Microseconds expiry) noexcept;
+                   Microseconds expiry) noexcept {
+    if (type_ == 0U) {
+      if (context.profile.tpdoType0 == TpdoType0::kEverySync || event_) {
+        event_ = false;
+        sendCurrent(context, now, expiry);
+      }
+    } else if (type_ <= 240U) {
+      if (waitingForStart_ && counter != 0U) {
+        if (counter != syncStart_) {
+          return;
+        }
+        waitingForStart_ = false;
+        updateSyncPeriod();
+        syncCount_ = 0;
+        sendCurrent(context, now, expiry);
+        return;
+      }
+      if (++syncCount_ >= type_) {
+        syncCount_ = 0;
+        sendCurrent(context, now, expiry);
+      }
+    } else if (type_ == 252U) {
+      map_.pack(context.access, sampled_);
+      sampledValid_ = true;
+    }
+  }
   /// What start() and restart() share: running from `now`, with `event` waiting (for a type
   /// that takes events) and, for an event-driven PDO, an inhibit time that ends at `inhibitEnd`
   /// (kNever: none) and the event timer started.
