@@ -41,16 +41,6 @@ void TpdoChannel::stop() noexcept {
   eventDeadline_ = kNever;
 }
 
-bool TpdoChannel::signalEvent(NodeClock& clock) noexcept {
-  if (!running_ || !takesEvents()) {
-    return false;
-  }
-  const bool raised = !event_;
-  event_ = true;
-  clock.schedule(nextDeadline(clock.now));
-  return raised;
-}
-
 void TpdoChannel::onRemoteRequest(PdoContext& context, Microseconds now) noexcept {
   if (!running_ || !valid_ || !rtrAllowed_) {
     return;

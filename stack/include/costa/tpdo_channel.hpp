@@ -75,7 +75,15 @@ class TpdoChannel : public PdoChannel {
   void onRemoteRequest(PdoContext& context, Microseconds now) noexcept;
   /// The application changed mapped data (or asks for a transmission): an event. True when it
   /// raised one that was not pending already.
-  bool signalEvent(NodeClock& clock) noexcept;
+  bool signalEvent(NodeClock& clock) noexcept {
+    if (!running_ || !takesEvents()) {
+      return false;
+    }
+    const bool raised = !event_;
+    event_ = true;
+    clock.schedule(nextDeadline(clock.now));
+    return raised;
+  }
   /// Takes back an event signalled in the same moment (an answered RPDO that was refused).
   void withdrawEvent() noexcept { event_ = false; }
   bool maps(const od::EntryRef& ref) const noexcept { return map_.contains(ref); }
