@@ -104,10 +104,6 @@ AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, si
   return AbortCode::kNone;
 }
 
-od::EntryRef PdoMap::locate(const ObjectAccess& access, size_t slot) const noexcept {
-  return access.dictionary().find(slots_[slot].where, slots_[slot].subIndex);
-}
-
 bool PdoMap::contains(const od::EntryRef& ref) const noexcept {
   // A TPDO's map (the only one asked): no dummy entries; inRom() tells the two value blocks apart.
   // A DOMAIN is never mapped (it has no size), and its offset is no value's.

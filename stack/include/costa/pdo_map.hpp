@@ -144,7 +144,9 @@ class PdoMap {
   bool skipped(size_t slot) const noexcept { return (markMask_ & (1U << slot)) != 0U; }
   /// In a TPDO: slot `slot` is copied from the constants block.
   bool inRom(size_t slot) const noexcept { return (markMask_ & (1U << slot)) != 0U; }
-  od::EntryRef locate(const ObjectAccess& access, size_t slot) const noexcept;
+  od::EntryRef locate(const ObjectAccess& access, size_t slot) const noexcept {
+    return access.dictionary().find(slots_[slot].where, slots_[slot].subIndex);
+  }
 
   // The four bytes first, within reach of Thumb-1's short offsets from the channel that holds
   // the map.
