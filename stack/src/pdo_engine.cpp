@@ -45,19 +45,19 @@ void PdoEngine::bind() noexcept {
 void PdoEngine::configure() noexcept {
   running_ = false;
   for (size_t i = 0; i < rpdoCount_; ++i) {
-    configureChannel(rpdos_[i], true);
+    configureChannel(true, i);
   }
   for (size_t i = 0; i < tpdoCount_; ++i) {
-    configureChannel(tpdos_[i], false);
+    configureChannel(false, i);
   }
 }
 
-void PdoEngine::configureChannel(PdoChannel& channel, bool receive) noexcept {
+void PdoEngine::configureChannel(bool receive, size_t number) noexcept {
   bool resolved = false;
   if (receive) {
-    resolved = static_cast<RpdoChannel&>(channel).configure(context_);
+    resolved = rpdos_[number].configure(context_);
   } else {
-    auto& tpdo = static_cast<TpdoChannel&>(channel);
+    TpdoChannel& tpdo = tpdos_[number];
     resolved = tpdo.configure(context_);
     if (running_) {
       tpdo.restart(context_, context_.clock.now);
@@ -172,13 +172,14 @@ bool PdoEngine::requestTransmission(uint16_t communicationIndex) noexcept {
   return true;
 }
 
-PdoChannel* PdoEngine::findChannel(uint16_t communicationIndex) noexcept {
-  const bool receive = communicationIndex < kTpdoCommunicationFirst;
+const PdoChannel* PdoEngine::findChannel(bool receive, uint16_t communicationIndex,
+                                         size_t* number) const noexcept {
   const size_t count = receive ? rpdoCount_ : tpdoCount_;
   for (size_t i = 0; i < count; ++i) {
-    PdoChannel* channel = receive ? static_cast<PdoChannel*>(&rpdos_[i]) : &tpdos_[i];
-    if (channel->communicationIndex() == communicationIndex) {
-      return channel;
+    const PdoChannel* found = receive ? static_cast<const PdoChannel*>(&rpdos_[i]) : &tpdos_[i];
+    if (found->communicationIndex() == communicationIndex) {
+      *number = i;
+      return found;
     }
   }
   return nullptr;
@@ -202,12 +203,13 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   const auto communicationIndex = static_cast<uint16_t>(index & ~kMappingOffset);
   const bool receive = index < kTpdoCommunicationFirst;
   // The channel the parameter belongs to: an RPDO's or a TPDO's, or none (a plain entry).
-  PdoChannel* channel = findChannel(communicationIndex);
-  if (channel == nullptr) {
+  size_t number = 0;
+  const PdoChannel* pdo = findChannel(receive, communicationIndex, &number);
+  if (pdo == nullptr) {
     return dictionary.write(ref, data, length);
   }
-  const AbortCode verdict = mapping ? checkMappingWrite(*channel, receive, ref, data, length)
-                                    : checkCommunicationWrite(*channel, receive, ref, data, length);
+  const AbortCode verdict = mapping ? checkMappingWrite(*pdo, receive, ref, data, length)
+                                    : checkCommunicationWrite(*pdo, receive, ref, data, length);
   if (verdict != AbortCode::kNone) {
     return verdict;
   }
@@ -215,7 +217,7 @@ AbortCode PdoEngine::write(od::ObjectDictionary& dictionary, const od::EntryRef&
   if (written != AbortCode::kNone) {
     return written;
   }
-  configureChannel(*channel, receive);
+  configureChannel(receive, number);
   context_.routes.invalidate();
   return AbortCode::kNone;
 }

@@ -37,7 +37,8 @@ void RpdoChannel::setCondition(PdoContext& context, Condition condition, bool on
                     kEmcyLengthShort == 0x8210U && kEmcyLengthLong == 0x8220U &&
                     kEmcyTimeout == 0x8250U,
                 "codes by bit");
-  const auto code = static_cast<uint16_t>(0x8200U + ((condition + (condition >> 2U)) << 4U));
+  const unsigned bit = condition;
+  const auto code = static_cast<uint16_t>(0x8200U + ((bit + (bit >> 2U)) << 4U));
   if (on) {
     raised_ |= condition;
     context.emcy.raise(code, source(), kErrorCommunication);
@@ -68,7 +69,7 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
 }
 
 void RpdoChannel::restartDeadline(PdoContext& context, Microseconds now) noexcept {
-  deadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
+  deadline_ = at(now, millisecondsToMicroseconds(eventTimerMs()));
   context.clock.schedule(deadline_);
   setCondition(context, kTimedOut, false);
 }
@@ -90,7 +91,7 @@ void RpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
   if (reached(now, deadline_)) {  // (never while kTimedOut: deadline_ is kNever then)
     deadline_ = kNever;
     setCondition(context, kTimedOut, true);
-    const uint16_t index = index_;
+    const uint16_t index = communicationIndex();
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoTimeout(index); });
   }
 }

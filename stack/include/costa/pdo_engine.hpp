@@ -105,11 +105,13 @@ class PdoEngine : public ObjectHook {
                   size_t length) noexcept override;
 
  private:
-  /// The RPDO or TPDO whose communication parameter is at `communicationIndex`, or nullptr.
-  PdoChannel* findChannel(uint16_t communicationIndex) noexcept;
-  /// Configures `channel` (an RPDO's when `receive`, else a TPDO's) from its parameters; a
-  /// TPDO restarts when running, else stops. Counts a mapping that cannot be resolved.
-  void configureChannel(PdoChannel& channel, bool receive) noexcept;
+  /// The RPDO (`receive`) or TPDO whose communication parameter is at `communicationIndex`,
+  /// and its number in `*number`; nullptr when there is none.
+  const PdoChannel* findChannel(bool receive, uint16_t communicationIndex,
+                                size_t* number) const noexcept;
+  /// Configures RPDO (`receive`) or TPDO `number` from its parameters; a TPDO restarts when
+  /// running, else stops. Counts a mapping that cannot be resolved.
+  void configureChannel(bool receive, size_t number) noexcept;
   TpdoChannel* findTpdo(uint16_t communicationIndex) noexcept;
   /// The refusal of a write to `ref`, a parameter of `channel` (an RPDO's when `receive`), or
   /// kNone: a communication parameter's, a mapping parameter's.

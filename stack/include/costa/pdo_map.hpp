@@ -118,17 +118,21 @@ class PdoMap {
   /// Copies one value; where speed counts, the common sizes are a load and a store (built for
   /// size, one call of memcpy).
   static void copyValue(uint8_t* to, const uint8_t* from, size_t length) noexcept {
-    if (!kExpandFastPaths) {
-      copyBytes(to, from, length);
-    } else if (length == 4U) {
-      copyBytes(to, from, 4);
-    } else if (length == 1U) {
-      *to = *from;
-    } else if (length == 2U) {
-      copyBytes(to, from, 2);
-    } else {
-      copyBytes(to, from, length);
+    if constexpr (kExpandFastPaths) {
+      if (length == 4U) {
+        copyBytes(to, from, 4);
+        return;
+      }
+      if (length == 1U) {
+        *to = *from;
+        return;
+      }
+      if (length == 2U) {
+        copyBytes(to, from, 2);
+        return;
+      }
     }
+    copyBytes(to, from, length);
   }
   void packThroughAccess(const ObjectAccess& access, uint8_t* out) const noexcept;
   AbortCode writeThroughAccess(ObjectAccess& access, const uint8_t* data) const noexcept;

@@ -29,7 +29,7 @@ class RpdoChannel : public PdoChannel {
 
   /// Gives the channel its communication object, before anything else is asked of it.
   void bind(uint16_t communicationIndex) noexcept {
-    index_ = communicationIndex;
+    bindTo(communicationIndex);
     deadline_ = kNever;
   }
   /// The TPDO (its channel in PdoContext::tpdos) that answers each PDO this channel accepts
@@ -44,7 +44,8 @@ class RpdoChannel : public PdoChannel {
   bool configure(PdoContext& context) noexcept;
   /// Resolves the mapping again (a hook was attached). Same result as configure().
   bool resolveMapping(PdoContext& context) noexcept {
-    const bool resolved = resolvePdoMapping(context, index_, PdoDirection::kReceive, &map_);
+    const bool resolved =
+        resolvePdoMapping(context, communicationIndex(), PdoDirection::kReceive, &map_);
     updateQuietDlc();
     return resolved;
   }
@@ -53,7 +54,7 @@ class RpdoChannel : public PdoChannel {
 
   /// True for a data frame on this PDO's CAN-ID.
   bool accepts(const CanFrame& frame) const noexcept {
-    return valid_ && !frame.rtr && !frame.extended && frame.id == canId_;
+    return valid() && !frame.rtr && !frame.extended && frame.id == canId();
   }
 
   /// A received PDO (node operational). Too few bytes: EMCY 0x8210, nothing applied. More bytes
@@ -67,13 +68,13 @@ class RpdoChannel : public PdoChannel {
     if ((!kExpandFastPaths || frame.dlc != quietDlc_) && !checkLength(context, frame.dlc)) {
       return true;
     }
-    if (eventTimerMs_ != 0U) {
+    if (eventTimerMs() != 0U) {
       restartDeadline(context, now);
     }
-    if (type_ >= 254U) {
+    if (type() >= 254U) {
       return apply(context, frame.data);
     }
-    if (type_ <= 240U && !reached(now, context.syncWindowEnd)) {
+    if (type() <= 240U && !reached(now, context.syncWindowEnd)) {
       copyBytes(held_, frame.data, sizeof(held_));
       holding_ = true;
     }
@@ -123,11 +124,11 @@ class RpdoChannel : public PdoChannel {
   }
   bool applyChecked(PdoContext& context, const uint8_t* data) noexcept;
   void notifyWriting(PdoContext& context) const noexcept {
-    const uint16_t index = index_;
+    const uint16_t index = communicationIndex();
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoWriting(index); });
   }
   void notifyReceived(PdoContext& context) const noexcept {
-    const uint16_t index = index_;
+    const uint16_t index = communicationIndex();
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoReceived(index); });
   }
   void takeBackAnswer(PdoContext& context) const noexcept;
@@ -142,7 +143,7 @@ class RpdoChannel : public PdoChannel {
   /// the length stays right. False for a frame too short to apply. A frame that will be taken
   /// signals the answering TPDO (all frames come here when there is one: quietDlc_).
   bool checkLength(PdoContext& context, uint8_t dlc) noexcept;
-  uint8_t source() const noexcept { return static_cast<uint8_t>(index_ & 0xFFU); }
+  uint8_t source() const noexcept { return static_cast<uint8_t>(communicationIndex() & 0xFFU); }
 
   bool holding_ = false;
   uint8_t raised_ = 0;  ///< the Condition bits whose EMCY this PDO raised
