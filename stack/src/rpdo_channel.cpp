@@ -69,7 +69,7 @@ bool RpdoChannel::checkLength(PdoContext& context, uint8_t dlc) noexcept {
 }
 
 void RpdoChannel::restartDeadline(PdoContext& context, Microseconds now) noexcept {
-  deadline_ = at(now, millisecondsToMicroseconds(eventTimerMs()));
+  deadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
   context.clock.schedule(deadline_);
   setCondition(context, kTimedOut, false);
 }
@@ -91,7 +91,7 @@ void RpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
   if (reached(now, deadline_)) {  // (never while kTimedOut: deadline_ is kNever then)
     deadline_ = kNever;
     setCondition(context, kTimedOut, true);
-    const uint16_t index = communicationIndex();
+    const uint16_t index = index_;
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoTimeout(index); });
   }
 }

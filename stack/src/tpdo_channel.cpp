@@ -8,8 +8,8 @@ namespace costa {
 bool TpdoChannel::configure(PdoContext& context) noexcept {
   rtrAllowed_ = readCommunication(context);
   const od::ObjectDictionary& dictionary = context.access.dictionary();
-  inhibit_ = static_cast<uint16_t>(dictionary.readUnsigned32(communicationIndex(), 3, 0));
-  syncStart_ = static_cast<uint8_t>(dictionary.readUnsigned32(communicationIndex(), 6, 0));
+  inhibit_ = static_cast<uint16_t>(dictionary.readUnsigned32(index_, 3, 0));
+  syncStart_ = static_cast<uint8_t>(dictionary.readUnsigned32(index_, 6, 0));
   sampledValid_ = false;
   updateSyncPeriod();
   return resolveMapping(context);
@@ -27,8 +27,8 @@ void TpdoChannel::begin(PdoContext& context, Microseconds now, bool event,
   eventDeadline_ = kNever;
   if (eventDriven()) {
     inhibitUntil_ = inhibitEnd;
-    if (eventTimerMs() != 0U) {
-      eventDeadline_ = at(now, millisecondsToMicroseconds(eventTimerMs()));
+    if (eventTimerMs_ != 0U) {
+      eventDeadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
     }
     context.clock.schedule(nextDeadline(now));
   }
@@ -42,24 +42,24 @@ void TpdoChannel::stop() noexcept {
 }
 
 void TpdoChannel::onRemoteRequest(PdoContext& context, Microseconds now) noexcept {
-  if (!running_ || !valid() || !rtrAllowed_) {
+  if (!running_ || !valid_ || !rtrAllowed_) {
     return;
   }
-  if (type() == 252U) {
+  if (type_ == 252U) {
     // The values sampled at the last SYNC, or, before there is one, the current values.
     send(context, sampledValid_ ? sampled_ : nullptr, now, kNever);
   } else if (eventDriven() && inhibitUntil_ != kNever && !reached(now, inhibitUntil_)) {
     // CiA 301: the inhibit time is the least interval between transmissions of an event-driven
     // TPDO, answers included: within it the answer waits as an event does (process()).
     (void)signalEvent(context.clock);
-  } else if (type() >= 253U ||
-             (type() <= 240U && context.profile.tpdoRtrTypes == TpdoRtrTypes::kAllTypes)) {
+  } else if (type_ >= 253U ||
+             (type_ <= 240U && context.profile.tpdoRtrTypes == TpdoRtrTypes::kAllTypes)) {
     sendCurrent(context, now, kNever);
   }
 }
 
 void TpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
-  if (!running_ || !valid() || !eventDriven()) {
+  if (!running_ || !valid_ || !eventDriven()) {
     return;
   }
   if (reached(now, eventDeadline_)) {
@@ -76,7 +76,7 @@ void TpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
 }
 
 Microseconds TpdoChannel::nextDeadline(Microseconds now) const noexcept {
-  if (!running_ || !valid() || !eventDriven()) {
+  if (!running_ || !valid_ || !eventDriven()) {
     return kNever;
   }
   // The end of an inhibit time is a deadline too: it expires there.
@@ -87,7 +87,7 @@ Microseconds TpdoChannel::nextDeadline(Microseconds now) const noexcept {
 void TpdoChannel::send(PdoContext& context, const uint8_t* sample, Microseconds now,
                        Microseconds expiry) noexcept {
   CanFrame frame;
-  frame.id = canId();
+  frame.id = canId_;
   frame.dlc = static_cast<uint8_t>(map_.bytes());
   if (sample != nullptr) {
     copyBytes(frame.data, sample, frame.dlc);
@@ -100,8 +100,8 @@ void TpdoChannel::send(PdoContext& context, const uint8_t* sample, Microseconds 
   }
   inhibitUntil_ = inhibit_ == 0U ? kNever : at(now, inhibit_ * kHundredMicroseconds);
   context.clock.schedule(inhibitUntil_);
-  if (eventTimerMs() != 0U) {
-    eventDeadline_ = at(now, millisecondsToMicroseconds(eventTimerMs()));
+  if (eventTimerMs_ != 0U) {
+    eventDeadline_ = at(now, millisecondsToMicroseconds(eventTimerMs_));
     context.clock.schedule(eventDeadline_);
   }
 }

@@ -72,14 +72,15 @@ class PdoChannel {
   uint8_t transmissionType() const noexcept { return type_; }
 
  protected:
-  void bindTo(uint16_t communicationIndex) noexcept { index_ = communicationIndex; }
   /// Reads sub-indices 1 (COB-ID: validity, CAN-ID), 2 (type) and 5 (event timer); returns
   /// whether the COB-ID allows RTR.
   bool readCommunication(const PdoContext& context) noexcept;
-  uint8_t type() const noexcept { return type_; }
-  uint16_t eventTimerMs() const noexcept { return eventTimerMs_; }
 
  private:
+  // The two kinds of channel read the fields as their own (readCommunication() writes them).
+  friend class RpdoChannel;
+  friend class TpdoChannel;
+
   uint16_t index_ = 0;
   uint16_t canId_ = 0;
   uint16_t eventTimerMs_ = 0;  ///< sub-index 5

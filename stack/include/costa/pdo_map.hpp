@@ -119,21 +119,24 @@ class PdoMap {
   /// size, one call of memcpy).
   static void copyValue(uint8_t* to, const uint8_t* from, size_t length) noexcept {
     if constexpr (kExpandFastPaths) {
-      if (length == 4U) {
-        copyBytes(to, from, 4);
-        return;
-      }
-      if (length == 1U) {
-        *to = *from;
-        return;
-      }
-      if (length == 2U) {
-        copyBytes(to, from, 2);
-        return;
-      }
+      copyNumber(to, from, length);
+    } else {
+      copyBytes(to, from, length);
     }
-    copyBytes(to, from, length);
   }
+  /// copyValue() where speed counts.
+  static void copyNumber(uint8_t* to, const uint8_t* from, size_t length) noexcept {
+    if (length == 4U) {
+      copyBytes(to, from, 4);
+    } else if (length == 1U) {
+      *to = *from;
+    } else if (length == 2U) {
+      copyBytes(to, from, 2);
+    } else {
+      copyBytes(to, from, length);
+    }
+  }
+
   void packThroughAccess(const ObjectAccess& access, uint8_t* out) const noexcept;
   AbortCode writeThroughAccess(ObjectAccess& access, const uint8_t* data) const noexcept;
   /// Where an entry's bytes are: the offset of its value in the RAM block, or for an entry

@@ -29,7 +29,7 @@ class RpdoChannel : public PdoChannel {
 
   /// Gives the channel its communication object, before anything else is asked of it.
   void bind(uint16_t communicationIndex) noexcept {
-    bindTo(communicationIndex);
+    index_ = communicationIndex;
     deadline_ = kNever;
   }
   /// The TPDO (its channel in PdoContext::tpdos) that answers each PDO this channel accepts
@@ -44,8 +44,7 @@ class RpdoChannel : public PdoChannel {
   bool configure(PdoContext& context) noexcept;
   /// Resolves the mapping again (a hook was attached). Same result as configure().
   bool resolveMapping(PdoContext& context) noexcept {
-    const bool resolved =
-        resolvePdoMapping(context, communicationIndex(), PdoDirection::kReceive, &map_);
+    const bool resolved = resolvePdoMapping(context, index_, PdoDirection::kReceive, &map_);
     updateQuietDlc();
     return resolved;
   }
@@ -54,7 +53,7 @@ class RpdoChannel : public PdoChannel {
 
   /// True for a data frame on this PDO's CAN-ID.
   bool accepts(const CanFrame& frame) const noexcept {
-    return valid() && !frame.rtr && !frame.extended && frame.id == canId();
+    return valid_ && !frame.rtr && !frame.extended && frame.id == canId_;
   }
 
   /// A received PDO (node operational). Too few bytes: EMCY 0x8210, nothing applied. More bytes
@@ -68,13 +67,13 @@ class RpdoChannel : public PdoChannel {
     if ((!kExpandFastPaths || frame.dlc != quietDlc_) && !checkLength(context, frame.dlc)) {
       return true;
     }
-    if (eventTimerMs() != 0U) {
+    if (eventTimerMs_ != 0U) {
       restartDeadline(context, now);
     }
-    if (type() >= 254U) {
+    if (type_ >= 254U) {
       return apply(context, frame.data);
     }
-    if (type() <= 240U && !reached(now, context.syncWindowEnd)) {
+    if (type_ <= 240U && !reached(now, context.syncWindowEnd)) {
       copyBytes(held_, frame.data, sizeof(held_));
       holding_ = true;
     }
@@ -124,11 +123,11 @@ class RpdoChannel : public PdoChannel {
   }
   bool applyChecked(PdoContext& context, const uint8_t* data) noexcept;
   void notifyWriting(PdoContext& context) const noexcept {
-    const uint16_t index = communicationIndex();
+    const uint16_t index = index_;
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoWriting(index); });
   }
   void notifyReceived(PdoContext& context) const noexcept {
-    const uint16_t index = communicationIndex();
+    const uint16_t index = index_;
     context.listeners.notify([index](NodeEvents& listener) { listener.onRpdoReceived(index); });
   }
   void takeBackAnswer(PdoContext& context) const noexcept;
@@ -143,7 +142,7 @@ class RpdoChannel : public PdoChannel {
   /// the length stays right. False for a frame too short to apply. A frame that will be taken
   /// signals the answering TPDO (all frames come here when there is one: quietDlc_).
   bool checkLength(PdoContext& context, uint8_t dlc) noexcept;
-  uint8_t source() const noexcept { return static_cast<uint8_t>(communicationIndex() & 0xFFU); }
+  uint8_t source() const noexcept { return static_cast<uint8_t>(index_ & 0xFFU); }
 
   bool holding_ = false;
   uint8_t raised_ = 0;  ///< the Condition bits whose EMCY this PDO raised

@@ -19,7 +19,7 @@ class TpdoChannel : public PdoChannel {
  public:
   /// Gives the channel its communication object, before anything else is asked of it.
   void bind(uint16_t communicationIndex) noexcept {
-    bindTo(communicationIndex);
+    index_ = communicationIndex;
     inhibitUntil_ = kNever;
     eventDeadline_ = kNever;
   }
@@ -29,15 +29,15 @@ class TpdoChannel : public PdoChannel {
   bool configure(PdoContext& context) noexcept;
   /// Resolves the mapping again (a hook was attached). Same result as configure().
   bool resolveMapping(PdoContext& context) noexcept {
-    return resolvePdoMapping(context, communicationIndex(), PdoDirection::kTransmit, &map_);
+    return resolvePdoMapping(context, index_, PdoDirection::kTransmit, &map_);
   }
 
   bool rtrAllowed() const noexcept { return rtrAllowed_; }
-  bool eventDriven() const noexcept { return type() >= 254U; }
+  bool eventDriven() const noexcept { return type_ >= 254U; }
   /// Events count for it: event-driven (254, 255) or acyclic synchronous (0, at the next SYNC).
-  bool takesEvents() const noexcept { return type() == 0U || eventDriven(); }
+  bool takesEvents() const noexcept { return type_ == 0U || eventDriven(); }
   /// Sends at SYNCs (types 0..240) or samples at them (252).
-  bool synchronous() const noexcept { return type() <= 240U || type() == 252U; }
+  bool synchronous() const noexcept { return type_ <= 240U || type_ == 252U; }
 
   /// Entering operational: SYNC counting restarts, the event timer starts, and an event-driven
   /// PDO is sent once when `initialEvent`.
@@ -50,7 +50,7 @@ class TpdoChannel : public PdoChannel {
     // What a PDO made not valid had waiting is gone (and an old inhibit time would not expire);
     // type 0 sends what waits at the next SYNC still, and the transmission before the write
     // still inhibits the next.
-    begin(context, now, event_ && valid(), valid() ? inhibitUntil_ : kNever);
+    begin(context, now, event_ && valid_, valid_ ? inhibitUntil_ : kNever);
   }
   void stop() noexcept;
 
@@ -67,7 +67,7 @@ class TpdoChannel : public PdoChannel {
       }
       return;
     }
-    if (running_ && valid()) {
+    if (running_ && valid_) {
       onOtherSync(context, counter, now, expiry);
     }
   }
@@ -98,12 +98,12 @@ class TpdoChannel : public PdoChannel {
   /// case): type 0, a cyclic type (still waiting for its SYNC start value), type 252.
   void onOtherSync(PdoContext& context, uint8_t counter, Microseconds now,
                    Microseconds expiry) noexcept {
-    if (type() == 0U) {
+    if (type_ == 0U) {
       if (context.profile.tpdoType0 == TpdoType0::kEverySync || event_) {
         event_ = false;
         sendCurrent(context, now, expiry);
       }
-    } else if (type() <= 240U) {
+    } else if (type_ <= 240U) {
       if (waitingForStart_ && counter != 0U) {
         if (counter != syncStart_) {
           return;
@@ -114,11 +114,11 @@ class TpdoChannel : public PdoChannel {
         sendCurrent(context, now, expiry);
         return;
       }
-      if (++syncCount_ >= type()) {
+      if (++syncCount_ >= type_) {
         syncCount_ = 0;
         sendCurrent(context, now, expiry);
       }
-    } else if (type() == 252U) {
+    } else if (type_ == 252U) {
       map_.pack(context.access, sampled_);
       sampledValid_ = true;
     }
@@ -130,7 +130,7 @@ class TpdoChannel : public PdoChannel {
   /// Sends the current values of a synchronous PDO (no inhibit time, no event timer).
   COSTA_HOT_INLINE void sendNow(PdoContext& context, Microseconds expiry) noexcept {
     CanFrame frame;
-    frame.id = canId();
+    frame.id = canId_;
     frame.dlc = static_cast<uint8_t>(map_.bytes());
     map_.pack(context.access, frame.data);
     context.tx.send(frame, expiry);
@@ -146,7 +146,7 @@ class TpdoChannel : public PdoChannel {
   /// at it: it stays 0).
   void updateSyncPeriod() noexcept {
     if constexpr (kExpandFastPaths) {
-      syncPeriod_ = running_ && valid() && type() - 1U < 240U && !waitingForStart_ ? type() : 0U;
+      syncPeriod_ = running_ && valid_ && type_ - 1U < 240U && !waitingForStart_ ? type_ : 0U;
     }
   }
 
