@@ -74,10 +74,13 @@ COSTA_HOT_INLINE bool Node::route(const RouteEntry& entry, const CanFrame& frame
   switch (entry.route) {
     case Route::kNmt: return nmt_.onCommand(frame);
     case Route::kLss: {
-      const bool used = lss_.onFrame(frame, clock_.now);
-      tx_.setGate(TransmitPath::kBitTiming, lss_.transmissionSuspended());
-      clock_.schedule(lss_.nextDeadline());
-      return used;
+      if constexpr (features::kLss) {
+        const bool used = lss_.onFrame(frame, clock_.now);
+        tx_.setGate(TransmitPath::kBitTiming, lss_.transmissionSuspended());
+        clock_.schedule(lss_.nextDeadline());
+        return used;
+      }
+      return false;  // a build without LSS has no such route
     }
     case Route::kSync: {
       if (frame.rtr || !preOrOperational()) {
@@ -211,8 +214,10 @@ Microseconds Node::runDue() noexcept {
   }
   sdo_.process(at);
   sdoServers_.process(at);
-  lss_.process(at);
-  tx_.setGate(TransmitPath::kBitTiming, lss_.transmissionSuspended());
+  if constexpr (features::kLss) {
+    lss_.process(at);
+    tx_.setGate(TransmitPath::kBitTiming, lss_.transmissionSuspended());
+  }
   const NmtState state = nmt_.state();
   if (state != NmtState::kInitialising) {
     heartbeat_.process(at, heartbeatState());
