@@ -54,7 +54,7 @@ void NmtStateMachine::resetCommunication() noexcept {
   services_.sdoServers.reset();
   services_.heartbeat.stop();
   services_.tx.discardQueued();  // what waited belongs to the state the node leaves
-  LssSlaveService& lss = services_.lss;
+  auto& lss = services_.lss;
   if (features::kLss && services_.settings.lss && lss.pendingNodeId() != lss.activeNodeId()) {
     pendingNodeId_ = lss.pendingNodeId();  // configured by LSS: applies now (CiA 305)
   }

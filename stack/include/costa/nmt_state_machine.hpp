@@ -51,6 +51,11 @@ class NmtStateMachine {
  public:
   using LssSlaveService = ServiceIf<features::kLss, LssSlave, AbsentLssSlave>;
 
+  /// The node's `Service` when it is compiled in; a compiled-out service's stand-in is
+  /// stateless, so a copy of it does as well as the node's (and takes no reference).
+  template <bool kCompiledIn, typename Service>
+  using ServiceOf = ServiceIf<kCompiledIn, Service&, Service>;
+
   /// The services a reset sets up again and the state changes act on.
   struct Services {
     od::ObjectDictionary& dictionary;
@@ -59,16 +64,16 @@ class NmtStateMachine {
     const NodeListeners& listeners;
     TransmitPath& tx;
     SdoServer& sdo;
-    SdoServersChoice& sdoServers;
+    ServiceOf<features::kSdoServers, SdoServersChoice> sdoServers;
     HeartbeatProducer& heartbeat;
     EmcyProducer& emcy;
     SyncService& sync;
-    TimeServiceChoice& time;
+    ServiceOf<features::kTime, TimeServiceChoice> time;
     PdoEngine& pdos;
     ErrorControl& errorControl;
     StoredParametersChoice& stored;
     BitTimingSwitch& bitTiming;
-    LssSlaveService& lss;
+    ServiceOf<features::kLss, LssSlaveService> lss;
     FrameRouter& router;
   };
 
