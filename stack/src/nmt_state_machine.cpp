@@ -79,7 +79,10 @@ void NmtStateMachine::resetCommunication() noexcept {
   services_.heartbeat.setNodeId(nodeId_);
   services_.emcy.setNodeId(nodeId_);
   services_.emcy.onResetCommunication();
-  services_.errorControl.reset(nodeId_);
+  // cppcheck-suppress knownConditionTrueFalse ; two independent switches that may agree
+  if constexpr (features::kHeartbeatConsumer || features::kNodeGuarding) {
+    services_.errorControl.reset(nodeId_);  // (without them, error control has nothing to reset)
+  }
   services_.sync.configure(services_.clock.now);
   services_.time.configure();
   services_.pdos.configure();

@@ -221,7 +221,10 @@ Microseconds Node::runDue() noexcept {
   const NmtState state = nmt_.state();
   if (state != NmtState::kInitialising) {
     heartbeat_.process(at, heartbeatState());
-    errorControl_.process(at);
+    // cppcheck-suppress knownConditionTrueFalse ; two independent switches that may agree
+    if constexpr (features::kHeartbeatConsumer || features::kNodeGuarding) {
+      errorControl_.process(at);  // (without them, error control has no timers)
+    }
     SyncEvent sync;
     if (sync_.process(at, preOrOperational(), &sync)) {
       handleSync(sync);
