@@ -69,7 +69,9 @@ AbortCode Node::writeEntry(uint16_t index, uint8_t subIndex, const uint8_t* data
 void Node::flushTx() noexcept {
   tx_.flush(clock_.now);
   clock_.schedule(sdo_.nextDeadline());  // a block upload burst may go on now
-  clock_.schedule(sdoServers_.nextDeadline());
+  if constexpr (features::kSdoServers) {
+    clock_.schedule(sdoServers_.nextDeadline());
+  }
 }
 
 void Node::start(Microseconds now) noexcept {

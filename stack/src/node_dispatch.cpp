@@ -237,7 +237,10 @@ Microseconds Node::runDue() noexcept {
   tx_.flush(at);
   Microseconds next = earliest(sdo_.nextDeadline(), heartbeat_.nextDeadline());
   next = earliest(next, sdoServers_.nextDeadline());
-  next = earliest(next, errorControl_.nextDeadline());
+  // cppcheck-suppress knownConditionTrueFalse ; two independent switches that may agree
+  if constexpr (features::kHeartbeatConsumer || features::kNodeGuarding) {
+    next = earliest(next, errorControl_.nextDeadline());
+  }
   next = earliest(next, sync_.nextDeadline());
   next = earliest(next, time_.nextDeadline());
   next = earliest(next, safety_.nextDeadline());
