@@ -67,7 +67,8 @@ class Node {
 
   /// Sets the services up over `memory`; sends nothing until start(). O(objects).
   Node(const od::Definition& definition, const NodeMemory& memory, CanTransmitter& can,
-       const NodeSettings& settings) noexcept;
+       const NodeSettings& settings) noexcept
+      : Node(definition, memory.values, memory, can, settings) {}
   Node(const Node&) = delete;
   Node& operator=(const Node&) = delete;
   ~Node() = default;
@@ -242,6 +243,14 @@ class Node {
   /// The latest `now` the node was given.
   Microseconds now() const noexcept { return clock_.now; }
 
+ protected:
+  /// The constructor over `memory`: a NodeMemory, or a NodeInstance's buffers
+  /// (detail::NodeBuffers: the same names, the capacities constants), with the dictionary's
+  /// RAM block `values`. Out of line: the buffers' addresses are offsets from `memory`.
+  template <typename Memory>
+  [[gnu::noinline]] Node(const od::Definition& definition, void* values, Memory& memory,
+                         CanTransmitter& can, const NodeSettings& settings) noexcept;
+
  private:
   Microseconds runDue() noexcept;
   void buildRoutes() noexcept;
@@ -297,6 +306,51 @@ class Node {
   uint32_t hooksRefused_ = 0;
 };
 
+template <typename Memory>
+Node::Node(const od::Definition& definition, void* values, Memory& memory, CanTransmitter& can,
+           const NodeSettings& settings) noexcept
+    : settings_(settings),
+      dictionary_(definition, values),
+      tx_(can, memory.txSlots, memory.txCapacity),
+      hooks_(memory.hookSlots, memory.hookCapacity),
+      access_(dictionary_, hooks_, services_),
+      emcy_(dictionary_, settings_.profile.emcy, clock_, memory.emcyConditions,
+            memory.emcyConditionCapacity, memory.emcyQueue, memory.emcyQueueCapacity),
+      pdoContext_{access_, tx_, settings_.profile.pdo, emcy_, listeners_, clock_, router_},
+      sdo_(access_, tx_, settings_.profile.sdo, clock_, memory.sdoBuffer, memory.sdoBufferSize,
+           settings_.sdoTimeout),
+      sdoServers_(access_, tx_, settings_.profile.sdo, clock_, memory.sdoServerSlots,
+                  memory.sdoServerBuffers, memory.sdoBufferSize, memory.sdoServerCount,
+                  settings_.sdoTimeout, router_),
+      heartbeat_(dictionary_, tx_, clock_),
+      sync_(dictionary_, tx_, emcy_, clock_, router_),
+      time_(dictionary_, tx_, clock_, router_),
+      emcyConsumer_(listeners_, router_),
+      safety_(SafetyService::Services{access_, tx_, emcy_, listeners_, router_, nmt_, clock_,
+                                      memory.srdoChannels, static_cast<uint8_t>(memory.srdoCount)}),
+      pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
+      stored_(dictionary_, settings_, listeners_),
+      bitTiming_(settings_.bitRateControl, settings_.bitTiming),
+      router_(memory.routes, memory.routeCapacity),
+      errorControl_(dictionary_, settings_.profile.errorControl, tx_, emcy_, clock_, listeners_,
+                    nmt_, memory.heartbeatMonitors, memory.heartbeatMonitorCapacity),
+      lssBridge_(settings_, bitTiming_, stored_, listeners_, nmt_),
+      lss_(tx_, lssBridge_),
+      nmt_(NmtStateMachine::Services{dictionary_, settings_, clock_, listeners_, tx_, sdo_,
+                                     sdoServers_, heartbeat_, emcy_, sync_, time_, pdos_,
+                                     errorControl_, stored_, bitTiming_, lss_, router_},
+           settings_.nodeId),
+      services_(ServiceObjects::Hooks{&emcy_, &sync_, &errorControl_.guardingObjects(),
+                                      &stored_.commands(), &errorControl_.consumerObjects(),
+                                      &heartbeat_, serviceHook(time_), serviceHook(emcyConsumer_),
+                                      serviceHook(safety_), &pdos_, serviceHook(sdoServers_)}) {
+  access_.setObserver(stored_.autoSave());
+  pdos_.bind();
+}
+
+extern template Node::Node(const od::Definition& definition, void* values, const NodeMemory& memory,
+                           CanTransmitter& can, const NodeSettings& settings) noexcept;
+
 /// A node together with its storage, sized at compile time from the generated dictionary
 /// (`Values`, `Capacity` of a `costa::gen::NAME` namespace) and `Extra`.
 template <typename Values, typename DictionaryCapacity, typename Extra = DefaultNodeCapacity>
@@ -306,7 +360,8 @@ class NodeInstance : private detail::NodeBuffers<Values, DictionaryCapacity, Ext
  public:
   NodeInstance(const od::Definition& definition, CanTransmitter& can,
                const NodeSettings& settings) noexcept
-      : Buffers{}, Node(definition, Buffers::memory(), can, settings) {}
+      : Buffers{},
+        Node(definition, &this->Buffers::values, static_cast<Buffers&>(*this), can, settings) {}
 
   /// The dictionary's RAM block, typed.
   Values& values() noexcept { return this->Buffers::values; }

@@ -64,25 +64,22 @@ constexpr size_t atLeastOne(size_t n) {
 template <size_t kCount, size_t kBytes>
 struct SdoServerStorage {
   SdoServerSlot sdoServerSlots[kCount]{};
-  uint8_t sdoServerBuffers[kCount][kBytes]{};
-  SdoServerSlot* slots() noexcept { return sdoServerSlots; }
-  uint8_t* buffers() noexcept { return &sdoServerBuffers[0][0]; }
+  uint8_t sdoServerBuffers[kCount * kBytes]{};  ///< kBytes per server
 };
 template <size_t kBytes>
 struct SdoServerStorage<0, kBytes> {
-  static SdoServerSlot* slots() noexcept { return nullptr; }
-  static uint8_t* buffers() noexcept { return nullptr; }
+  static constexpr SdoServerSlot* sdoServerSlots = nullptr;
+  static constexpr uint8_t* sdoServerBuffers = nullptr;
 };
 
 /// The SRDOs' channels; a base class, so that none takes no room.
 template <size_t kCount>
 struct SrdoStorage {
   SrdoChannel srdoChannels[kCount]{};
-  SrdoChannel* channels() noexcept { return srdoChannels; }
 };
 template <>
 struct SrdoStorage<0> {
-  static SrdoChannel* channels() noexcept { return nullptr; }
+  static constexpr SrdoChannel* srdoChannels = nullptr;
 };
 
 template <typename DictionaryCapacity, typename Extra>
@@ -93,67 +90,44 @@ struct SdoSizes {
   static constexpr size_t kServers = features::kSdoServers ? DictionaryCapacity::kSdoServers : 0U;
 };
 
-/// Storage of a NodeInstance; a base class so that it is initialised before the Node base.
+/// Storage of a NodeInstance; a base class so that it is initialised before the Node base. Its
+/// members have NodeMemory's names, the capacities as constants: the node's constructor takes
+/// either (Node::Node), and over these buffers it needs no NodeMemory built at run time.
 template <typename Values, typename DictionaryCapacity, typename Extra>
 struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServers,
                                       SdoSizes<DictionaryCapacity, Extra>::kBytes>,
                      SrdoStorage<features::kSafety ? DictionaryCapacity::kSrdoCount : 0U> {
-  using SrdoRoom = SrdoStorage<features::kSafety ? DictionaryCapacity::kSrdoCount : 0U>;
-  static constexpr size_t kSrdos = features::kSafety ? DictionaryCapacity::kSrdoCount : 0U;
-  using SdoServerRoom = SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServers,
-                                         SdoSizes<DictionaryCapacity, Extra>::kBytes>;
-  static constexpr size_t kSdoBytes = SdoSizes<DictionaryCapacity, Extra>::kBytes;
-  static constexpr size_t kSdoServers = SdoSizes<DictionaryCapacity, Extra>::kServers;
-  static constexpr size_t kRpdos = atLeastOne(DictionaryCapacity::kRpdoCount);
-  static constexpr size_t kTpdos = atLeastOne(DictionaryCapacity::kTpdoCount);
-  static constexpr size_t kMonitors =
+  static constexpr size_t txCapacity = Extra::kTxQueueDepth;
+  static constexpr size_t sdoBufferSize = SdoSizes<DictionaryCapacity, Extra>::kBytes;
+  static constexpr size_t hookCapacity = Extra::kHooks;
+  static constexpr size_t rpdoCapacity = atLeastOne(DictionaryCapacity::kRpdoCount);
+  static constexpr size_t tpdoCapacity = atLeastOne(DictionaryCapacity::kTpdoCount);
+  static constexpr size_t emcyConditionCapacity = Extra::kEmcyConditions;
+  static constexpr size_t emcyQueueCapacity = Extra::kEmcyQueueDepth;
+  static constexpr size_t heartbeatMonitorCapacity =
       features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
+  static constexpr size_t sdoServerCount = SdoSizes<DictionaryCapacity, Extra>::kServers;
+  static constexpr size_t srdoCount = features::kSafety ? DictionaryCapacity::kSrdoCount : 0U;
   static constexpr size_t kEmcyConsumers =
       features::kEmcyConsumer ? DictionaryCapacity::kEmcyConsumers : 0U;
   /// Two per SRDO (its normal and inverted CAN-IDs), and GFC.
-  static constexpr size_t kSafetyRoutes = features::kSafety ? 1U + 2U * kSrdos : 0U;
+  static constexpr size_t kSafetyRoutes = features::kSafety ? 1U + 2U * srdoCount : 0U;
   /// NMT, SYNC, SDO, LSS, TIME (when compiled in), one per PDO, per consumed EMCY CAN-ID and
   /// per additional SDO server, and the safety service's.
-  static constexpr size_t kRoutes = 4U + (features::kTime ? 1U : 0U) + kRpdos + kTpdos +
-                                    kEmcyConsumers + kSdoServers + kSafetyRoutes;
+  static constexpr size_t routeCapacity = 4U + (features::kTime ? 1U : 0U) + rpdoCapacity +
+                                          tpdoCapacity + kEmcyConsumers + sdoServerCount +
+                                          kSafetyRoutes;
 
   Values values{};
-  QueuedFrame tx[Extra::kTxQueueDepth]{};
-  uint8_t sdo[kSdoBytes]{};
-  HookBinding hooks[Extra::kHooks]{};
-  RpdoChannel rpdos[kRpdos]{};
-  TpdoChannel tpdos[kTpdos]{};
-  EmcyCondition emcyConditions[Extra::kEmcyConditions]{};
-  PendingEmcy emcyQueue[Extra::kEmcyQueueDepth]{};
-  HeartbeatMonitor monitors[kMonitors]{};
-  RouteEntry routes[kRoutes]{};
-
-  NodeMemory memory() noexcept {
-    return NodeMemory{&values,
-                      tx,
-                      Extra::kTxQueueDepth,
-                      sdo,
-                      kSdoBytes,
-                      hooks,
-                      Extra::kHooks,
-                      rpdos,
-                      kRpdos,
-                      tpdos,
-                      kTpdos,
-                      emcyConditions,
-                      Extra::kEmcyConditions,
-                      emcyQueue,
-                      Extra::kEmcyQueueDepth,
-                      monitors,
-                      kMonitors,
-                      routes,
-                      kRoutes,
-                      SdoServerRoom::slots(),
-                      SdoServerRoom::buffers(),
-                      kSdoServers,
-                      SrdoRoom::channels(),
-                      kSrdos};
-  }
+  QueuedFrame txSlots[txCapacity]{};
+  uint8_t sdoBuffer[sdoBufferSize]{};
+  HookBinding hookSlots[hookCapacity]{};
+  RpdoChannel rpdos[rpdoCapacity]{};
+  TpdoChannel tpdos[tpdoCapacity]{};
+  EmcyCondition emcyConditions[emcyConditionCapacity]{};
+  PendingEmcy emcyQueue[emcyQueueCapacity]{};
+  HeartbeatMonitor heartbeatMonitors[heartbeatMonitorCapacity]{};
+  RouteEntry routes[routeCapacity]{};
 };
 }  // namespace detail
 
