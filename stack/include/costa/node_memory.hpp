@@ -82,6 +82,23 @@ struct SrdoStorage<0> {
   static constexpr SrdoChannel* srdoChannels = nullptr;
 };
 
+/// The heartbeat consumer's monitors; a base class, so that a build without the consumer
+/// takes no room for them.
+template <size_t kCount>
+struct HeartbeatMonitorStorage {
+  HeartbeatMonitor heartbeatMonitors[kCount]{};
+};
+template <>
+struct HeartbeatMonitorStorage<0> {
+  static constexpr HeartbeatMonitor* heartbeatMonitors = nullptr;
+};
+
+/// One monitor per sub-index of 0x1016 with the consumer, none without it.
+template <typename DictionaryCapacity>
+constexpr size_t kHeartbeatMonitors = features::kHeartbeatConsumer
+                                          ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers)
+                                          : 0U;
+
 template <typename DictionaryCapacity, typename Extra>
 struct SdoSizes {
   static constexpr size_t kBytes = DictionaryCapacity::kLargestValue > Extra::kMinimumSdoBuffer
@@ -96,7 +113,8 @@ struct SdoSizes {
 template <typename Values, typename DictionaryCapacity, typename Extra>
 struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServers,
                                       SdoSizes<DictionaryCapacity, Extra>::kBytes>,
-                     SrdoStorage<features::kSafety ? DictionaryCapacity::kSrdoCount : 0U> {
+                     SrdoStorage<features::kSafety ? DictionaryCapacity::kSrdoCount : 0U>,
+                     HeartbeatMonitorStorage<kHeartbeatMonitors<DictionaryCapacity>> {
   static constexpr size_t txCapacity = Extra::kTxQueueDepth;
   static constexpr size_t sdoBufferSize = SdoSizes<DictionaryCapacity, Extra>::kBytes;
   static constexpr size_t hookCapacity = Extra::kHooks;
@@ -104,8 +122,7 @@ struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServ
   static constexpr size_t tpdoCapacity = atLeastOne(DictionaryCapacity::kTpdoCount);
   static constexpr size_t emcyConditionCapacity = Extra::kEmcyConditions;
   static constexpr size_t emcyQueueCapacity = Extra::kEmcyQueueDepth;
-  static constexpr size_t heartbeatMonitorCapacity =
-      features::kHeartbeatConsumer ? atLeastOne(DictionaryCapacity::kHeartbeatConsumers) : 1U;
+  static constexpr size_t heartbeatMonitorCapacity = kHeartbeatMonitors<DictionaryCapacity>;
   static constexpr size_t sdoServerCount = SdoSizes<DictionaryCapacity, Extra>::kServers;
   static constexpr size_t srdoCount = features::kSafety ? DictionaryCapacity::kSrdoCount : 0U;
   static constexpr size_t kEmcyConsumers =
@@ -126,7 +143,6 @@ struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServ
   TpdoChannel tpdos[tpdoCapacity]{};
   EmcyCondition emcyConditions[emcyConditionCapacity]{};
   PendingEmcy emcyQueue[emcyQueueCapacity]{};
-  HeartbeatMonitor heartbeatMonitors[heartbeatMonitorCapacity]{};
   RouteEntry routes[routeCapacity]{};
 };
 }  // namespace detail
