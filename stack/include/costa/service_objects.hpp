@@ -1,7 +1,7 @@
 // Which of the node's services owns an object of the communication area: the hook the stack
 // itself puts behind 0x1003, 0x1005..0x1007, 0x100C, 0x100D, 0x1010, 0x1011, 0x1012, 0x1014,
 // 0x1016, 0x1017, 0x1019, 0x1028, 0x1201..0x127F, 0x1300..0x13FF and 0x1400..0x1BFF. A constant
-// table of owners for 0x1000..0x102F and range tests for the rest: no RAM per object, O(1).
+// table of owners for 0x1003..0x1028 and range tests for the rest: no RAM per object, O(1).
 // Application hooks (HookRegistry) take precedence over these.
 #pragma once
 
@@ -46,7 +46,7 @@ class ServiceObjects {
         return hooks_.sdoServers;  // the stand-in: they do not exist
       }
     }
-    const uint32_t offset = index - 0x1000U;
+    const uint32_t offset = index - kFirstOwned;
     if (offset < sizeof(kOwners)) {
       const uint8_t owner = kOwners[offset];
       return (kReaders & (1U << owner)) != 0U ? hooks_.of[owner] : nullptr;
@@ -54,10 +54,10 @@ class ServiceObjects {
     return !features::kSafety && index - 0x1300U <= 0xFFU ? hooks_.safety : nullptr;
   }
 
-  /// The hook of the service that owns `index`, or null. A table lookup for 0x1000..0x102F;
+  /// The hook of the service that owns `index`, or null. A table lookup for 0x1003..0x1028;
   /// range tests for the PDOs and the additional SDO servers.
   ObjectHook* find(uint16_t index) const noexcept {
-    const uint32_t offset = index - 0x1000U;
+    const uint32_t offset = index - kFirstOwned;
     if (offset < sizeof(kOwners)) {
       return hooks_.of[kOwners[offset]];
     }
@@ -82,11 +82,13 @@ class ServiceObjects {
   // cppcheck-suppress badBitmaskCheck ; a service's bit is zero when the service is compiled in
   static constexpr uint32_t kReaders =
       kStoreReader | kGuardingReader | kConsumerReader | kTimeReader | kEmcyConsumerReader;
-  /// Which service owns 0x1000 + n: 0 none, else a position in Table::of.
-  static constexpr uint8_t kOwners[0x30] = {
-      0, 0, 0, 1, 0, 2, 2, 2, 0, 0, 0, 0, 3, 3, 0, 0,  // 0x1003 EMCY; 0x1005-7 SYNC; 0x100C/D
+  /// The first object of the table (0x1003, EMCY's); the last is 0x1028 (the EMCY consumer's).
+  static constexpr uint16_t kFirstOwned = 0x1003;
+  /// Which service owns kFirstOwned + n: 0 none, else a position in Table::of.
+  static constexpr uint8_t kOwners[0x1028 - kFirstOwned + 1] = {
+      1, 0, 2, 2, 2, 0, 0, 0, 0, 3, 3, 0, 0,           // 0x1003 EMCY; 0x1005-7 SYNC; 0x100C/D
       4, 4, 7, 0, 1, 0, 5, 6, 0, 2, 0, 0, 0, 0, 0, 0,  // 0x1010/1 store; 0x1012 TIME; 0x1014; ...
-      0, 0, 0, 0, 0, 0, 0, 0, 8, 0, 0, 0, 0, 0, 0, 0,  // 0x1028 EMCY consumer
+      0, 0, 0, 0, 0, 0, 0, 0, 8,                       // 0x1028 EMCY consumer
   };
   struct Table {
     ObjectHook* of[9];  ///< [0] null, emcy, sync, guarding, store, consumer, heartbeat, time,
