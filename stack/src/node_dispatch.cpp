@@ -163,7 +163,7 @@ void Node::routeFrame(const CanFrame& frame, Microseconds now) noexcept {
     // (a reset may rebuild the table under our feet: then the frame has been handled; shared()
     // first, so that the usual table of one route per CAN-ID makes no call).
     do {
-      used = routeOne(*entry, frame) || used;
+      used = route(*entry, frame) || used;
     } while (router_.shared() && !router_.stale() &&
              (entry = router_.nextOfSameId(entry)) != nullptr);
   }
