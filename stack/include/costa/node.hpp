@@ -344,7 +344,9 @@ Node::Node(const od::Definition& definition, void* values, Memory& memory, CanTr
                                       &stored_.commands(), &errorControl_.consumerObjects(),
                                       &heartbeat_, serviceHook(time_), serviceHook(emcyConsumer_),
                                       serviceHook(safety_), &pdos_, serviceHook(sdoServers_)}) {
-  access_.setObserver(stored_.autoSave());
+  if constexpr (features::kParameterStorage) {
+    access_.setObserver(stored_.autoSave());  // (without storage, nothing observes writes)
+  }
   pdos_.bind();
 }
 
