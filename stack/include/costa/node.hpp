@@ -277,9 +277,15 @@ class Node {
     return nmt_.state() == NmtState::kOperational || nmt_.state() == NmtState::kPreOperational;
   }
 
+  // In the order of the smallest image on Cortex-M0+ (measured, and no padding on 32-bit
+  // targets): the PDOs and the routing table, which the node's own functions reach most, at
+  // short offsets; SYNC and safety last.
+  // (A constructor may keep a reference to a member declared after its own, never read it.)
   NodeSettings settings_;
   od::ObjectDictionary dictionary_;
   NodeClock clock_;
+  PdoEngine pdos_;
+  FrameRouter router_;
   NodeListeners listeners_;
   TransmitPath tx_;
   HookRegistry hooks_;
@@ -288,19 +294,17 @@ class Node {
   PdoContext pdoContext_;
   SdoServer sdo_;
   SdoServersChoice sdoServers_;
-  HeartbeatProducer heartbeat_;
-  SyncService sync_;
   TimeServiceChoice time_;
   EmcyConsumerChoice emcyConsumer_;
-  SafetyServiceChoice safety_;
-  PdoEngine pdos_;
   StoredParametersChoice stored_;
   BitTimingSwitch bitTiming_;
-  FrameRouter router_;
   ErrorControl errorControl_;
   LssBridgeChoice lssBridge_;
   LssSlaveService lss_;
+  HeartbeatProducer heartbeat_;
   NmtStateMachine nmt_;
+  SafetyServiceChoice safety_;
+  SyncService sync_;
   ServiceObjects services_;  ///< after the services it names; access_ refers to it
   uint32_t framesIgnored_ = 0;
   uint32_t hooksRefused_ = 0;
@@ -311,6 +315,8 @@ Node::Node(const od::Definition& definition, void* values, Memory& memory, CanTr
            const NodeSettings& settings) noexcept
     : settings_(settings),
       dictionary_(definition, values),
+      pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
+      router_(memory.routes, memory.routeCapacity),
       tx_(can, memory.txSlots, memory.txCapacity),
       hooks_(memory.hookSlots, memory.hookCapacity),
       access_(dictionary_, hooks_, services_),
@@ -322,24 +328,22 @@ Node::Node(const od::Definition& definition, void* values, Memory& memory, CanTr
       sdoServers_(access_, tx_, settings_.profile.sdo, clock_, memory.sdoServerSlots,
                   memory.sdoServerBuffers, memory.sdoBufferSize, memory.sdoServerCount,
                   settings_.sdoTimeout, router_),
-      heartbeat_(dictionary_, tx_, clock_),
-      sync_(dictionary_, tx_, emcy_, clock_, router_),
       time_(dictionary_, tx_, clock_, router_),
       emcyConsumer_(listeners_, router_),
-      safety_(SafetyService::Services{access_, tx_, emcy_, listeners_, router_, nmt_, clock_,
-                                      memory.srdoChannels, static_cast<uint8_t>(memory.srdoCount)}),
-      pdos_(pdoContext_, memory.rpdos, memory.rpdoCapacity, memory.tpdos, memory.tpdoCapacity),
       stored_(dictionary_, settings_, listeners_),
       bitTiming_(settings_.bitRateControl, settings_.bitTiming),
-      router_(memory.routes, memory.routeCapacity),
       errorControl_(dictionary_, settings_.profile.errorControl, tx_, emcy_, clock_, listeners_,
                     nmt_, memory.heartbeatMonitors, memory.heartbeatMonitorCapacity),
       lssBridge_(settings_, bitTiming_, stored_, listeners_, nmt_),
       lss_(tx_, lssBridge_),
+      heartbeat_(dictionary_, tx_, clock_),
       nmt_(NmtStateMachine::Services{dictionary_, settings_, clock_, listeners_, tx_, sdo_,
                                      sdoServers_, heartbeat_, emcy_, sync_, time_, pdos_,
                                      errorControl_, stored_, bitTiming_, lss_, router_},
            settings_.nodeId),
+      safety_(SafetyService::Services{access_, tx_, emcy_, listeners_, router_, nmt_, clock_,
+                                      memory.srdoChannels, static_cast<uint8_t>(memory.srdoCount)}),
+      sync_(dictionary_, tx_, emcy_, clock_, router_),
       services_(ServiceObjects::Hooks{&emcy_, &sync_, &errorControl_.guardingObjects(),
                                       &stored_.commands(), &errorControl_.consumerObjects(),
                                       &heartbeat_, serviceHook(time_), serviceHook(emcyConsumer_),
