@@ -68,8 +68,11 @@ struct SdoServerStorage {
 };
 template <size_t kBytes>
 struct SdoServerStorage<0, kBytes> {
+  // NodeMemory's names, which the node's constructor reads (NOLINT: not kNames, not const):
+  // NOLINTBEGIN(readability-identifier-naming,cppcoreguidelines-avoid-non-const-global-variables)
   static constexpr SdoServerSlot* sdoServerSlots = nullptr;
   static constexpr uint8_t* sdoServerBuffers = nullptr;
+  // NOLINTEND(readability-identifier-naming,cppcoreguidelines-avoid-non-const-global-variables)
 };
 
 /// The SRDOs' channels; a base class, so that none takes no room.
@@ -79,7 +82,10 @@ struct SrdoStorage {
 };
 template <>
 struct SrdoStorage<0> {
+  // NodeMemory's names, which the node's constructor reads (NOLINT: not kNames, not const):
+  // NOLINTBEGIN(readability-identifier-naming,cppcoreguidelines-avoid-non-const-global-variables)
   static constexpr SrdoChannel* srdoChannels = nullptr;
+  // NOLINTEND(readability-identifier-naming,cppcoreguidelines-avoid-non-const-global-variables)
 };
 
 /// The heartbeat consumer's monitors; a base class, so that a build without the consumer
@@ -90,7 +96,10 @@ struct HeartbeatMonitorStorage {
 };
 template <>
 struct HeartbeatMonitorStorage<0> {
+  // NodeMemory's names, which the node's constructor reads (NOLINT: not kNames, not const):
+  // NOLINTBEGIN(readability-identifier-naming,cppcoreguidelines-avoid-non-const-global-variables)
   static constexpr HeartbeatMonitor* heartbeatMonitors = nullptr;
+  // NOLINTEND(readability-identifier-naming,cppcoreguidelines-avoid-non-const-global-variables)
 };
 
 /// One monitor per sub-index of 0x1016 with the consumer, none without it.
@@ -115,6 +124,8 @@ struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServ
                                       SdoSizes<DictionaryCapacity, Extra>::kBytes>,
                      SrdoStorage<features::kSafety ? DictionaryCapacity::kSrdoCount : 0U>,
                      HeartbeatMonitorStorage<kHeartbeatMonitors<DictionaryCapacity>> {
+  // NodeMemory's names, which the node's constructor reads (NOLINT: not kNames).
+  // NOLINTBEGIN(readability-identifier-naming)
   static constexpr size_t txCapacity = Extra::kTxQueueDepth;
   static constexpr size_t sdoBufferSize = SdoSizes<DictionaryCapacity, Extra>::kBytes;
   static constexpr size_t hookCapacity = Extra::kHooks;
@@ -134,6 +145,7 @@ struct NodeBuffers : SdoServerStorage<SdoSizes<DictionaryCapacity, Extra>::kServ
   static constexpr size_t routeCapacity = 4U + (features::kTime ? 1U : 0U) + rpdoCapacity +
                                           tpdoCapacity + kEmcyConsumers + sdoServerCount +
                                           kSafetyRoutes;
+  // NOLINTEND(readability-identifier-naming)
 
   Values values{};
   QueuedFrame txSlots[txCapacity]{};
