@@ -45,5 +45,26 @@ TEST(TpdoConstants, AnotherNodeIdGivesAnotherValue) {
             "");
 }
 
+// 0x2002 holds what 0x2001 holds, and a PDO may map it: a value of its own, not one copy of the
+// two, so an application event on it is not one on TPDO1, which maps 0x2001.
+TEST(TpdoConstants, AnEventOnAnEqualConstantIsNotAnEventOfTheTpdoMappingTheOther) {
+  ConstantsBus bus(gen::tpdo_constants::kDefinition, withNodeId(1));
+  EXPECT_EQ(playText(R"(
+    tx 701 [1] 00
+    rx 601 [8] 2F 00 18 02 FE 00 00 00   # TPDO1 event-driven (type 254)
+    tx 581 [8] 60 00 18 02 00 00 00 00
+    rx 000 [2] 01 00
+    silence
+  )",
+                     bus),
+            "");
+  bus.node().markChanged(0x2002, 0);
+  bus.wait(1);
+  EXPECT_EQ(playText("silence", bus), "");
+  bus.node().markChanged(0x2001, 0);
+  bus.wait(1);
+  EXPECT_EQ(playText("tx 181 [6] 01 03 00 00 34 12", bus), "");
+}
+
 }  // namespace
 }  // namespace costa::test

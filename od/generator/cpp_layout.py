@@ -4,7 +4,7 @@ the offsetof() expression of each sub-entry."""
 from dataclasses import dataclass, field
 
 from cpp_names import struct_member, struct_type, sub_members, var_member
-from data_types import OBJECT_ARRAY
+from data_types import OBJECT_ARRAY, RPDO_MAPPABLE, TPDO_MAPPABLE
 from eds_model import Device, Entry, OdObject
 
 VALUES = "Values"
@@ -168,6 +168,13 @@ def _constants_key(member: BlockMember) -> tuple:
                   for m in member.members))
 
 
+def _mappable(member: BlockMember) -> bool:
+    """True when a PDO may map one of its values: a PDO tells its entries apart by where their
+    values are, so such a constant keeps a place of its own."""
+    return any(e.attributes & (RPDO_MAPPABLE | TPDO_MAPPABLE)
+               for m in member.members for e in m.entries)
+
+
 def _share_constants(layout: Layout, shared: dict) -> None:
     """The entries of objects whose constants equal an earlier object's (`shared`: index ->
     that object's index) at that object's offsets: one copy of the values in ROM."""
@@ -194,6 +201,9 @@ def plan_layout(device: Device) -> Layout:
             continue
         rom_entries += [(e.index, e.sub) for m in member.members for e in m.entries]
         key = _constants_key(member)
+        if _mappable(member):
+            constants.members.append(member)  # never shared, neither way
+            continue
         if key in owners:
             shared[obj.index] = owners[key]  # the same constants as an earlier object: shared
         else:

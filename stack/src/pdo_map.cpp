@@ -105,8 +105,10 @@ AbortCode PdoMap::resolve(const ObjectAccess& access, const uint32_t* values, si
 }
 
 bool PdoMap::contains(const od::EntryRef& ref) const noexcept {
-  // A TPDO's map (the only one asked): no dummy entries; inRom() tells the two value blocks apart.
-  // A DOMAIN is never mapped (it has no size), and its offset is no value's.
+  // A TPDO's map (the only one asked): no dummy entries; inRom() tells the two value blocks apart,
+  // and within a block an offset is one entry's (the generator shares a constant's place between
+  // objects only when no PDO may map it). A DOMAIN is never mapped (it has no size), and its
+  // offset is no value's.
   if (ref.type() == od::DataType::kDomain) {
     return false;
   }

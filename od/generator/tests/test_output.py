@@ -299,6 +299,27 @@ class SmallOutputTest(unittest.TestCase):
         self.assertIn("{0x2001, costa::od::ObjectCode::kRecord, 2, 0, ", cpp)
         self.assertIn("{0x2002, costa::od::ObjectCode::kRecord, 2, 2, ", cpp)
 
+    def test_mappable_constants_keep_their_own_place(self):
+        # Equal constants that a TPDO may map are not shared: a PDO tells its entries apart by
+        # where their values are.
+        var = """
+            [{index}]
+            ParameterName={name}
+            DataType=0x0006
+            AccessType=const
+            DefaultValue=0x1234
+            PDOMapping={mapping}
+            """
+        result = run_text(eds("".join(var.format(index=i, name=n, mapping=m) for i, n, m in
+                                      ((2000, "Mapped", 1), (2001, "Twin", 1), (2002, "Plain", 0),
+                                       (2003, "Plain twin", 0)))))
+        self.assertEqual(result.status, 0)
+        constants = result.files["test_od.hpp"].split("struct Constants {")[1]
+        for member in ("x2000_mapped;", "x2001_twin;", "x2002_plain;"):
+            with self.subTest(member=member):
+                self.assertIn(member, constants)
+        self.assertNotIn("x2003_plain_twin;", constants)
+
     def test_integer_limits_name_the_integer_check_only(self):
         result = run_text(eds("""
             [2000]
