@@ -101,10 +101,11 @@ namespace costa::od {
 namespace {
 
 // readUnsigned32() of (index, sub-index), which the stack's services read their objects with, is
-// the low half of readUnsigned(): for every entry of the example, values with the sign bit of
-// each size set, wide values, both node-ids of a `$NODEID` constant; a missing entry gives the
-// fallback, a string 0.
-TEST_F(ScalarTest, ReadUnsigned32IsTheLowHalfOfReadUnsignedForEveryEntry) {
+// the low half of what the out-of-line read of a Scalar (loadNative(), signExtend()) gives, and
+// readUnsigned() too: for every entry of the example, values with the sign bit of each size set,
+// wide values, both node-ids of a `$NODEID` constant; a missing entry gives the fallback, a
+// string 0.
+TEST_F(ScalarTest, ReadUnsigned32IsTheLowHalfOfTheScalarReadForEveryEntry) {
   size_t signedEntries = 0;
   for (uint64_t value : {0x0ULL, 0x80ULL, 0xFFULL, 0x8000ULL, 0xFFFEULL, 0x80000000ULL,
                          0xFFFFFFFFFFFFFF85ULL, 0x0123456789ABCDEFULL}) {
@@ -112,8 +113,12 @@ TEST_F(ScalarTest, ReadUnsigned32IsTheLowHalfOfReadUnsignedForEveryEntry) {
       byRef_.storeUnsigned(ref, value);
       for (const uint8_t nodeId : {uint8_t{5}, uint8_t{0x7F}}) {
         byRef_.setNodeId(nodeId);
-        EXPECT_EQ(byRef_.readUnsigned32(ref.index(), ref.subIndex(), 0xDEADBEEFU),
-                  static_cast<uint32_t>(byRef_.readUnsigned(ref)))
+        const bool integer = isSigned(ref.type()) || isUnsigned(ref.type());
+        const auto expected =
+            integer ? static_cast<uint32_t>(byRef_.readScalar(byRef_.scalar(ref))) : 0U;
+        EXPECT_EQ(byRef_.readUnsigned32(ref.index(), ref.subIndex(), 0xDEADBEEFU), expected)
+            << std::hex << ref.index() << ":" << unsigned{ref.subIndex()} << " " << value;
+        EXPECT_EQ(static_cast<uint32_t>(byRef_.readUnsigned(ref)), expected)
             << std::hex << ref.index() << ":" << unsigned{ref.subIndex()} << " " << value;
       }
       signedEntries += isSigned(ref.type()) ? 1U : 0U;
@@ -122,6 +127,28 @@ TEST_F(ScalarTest, ReadUnsigned32IsTheLowHalfOfReadUnsignedForEveryEntry) {
   EXPECT_GT(signedEntries, 0U);
   EXPECT_EQ(byRef_.readUnsigned32(0x5FFF, 0, 0xDEADBEEFU), 0xDEADBEEFU);
   EXPECT_EQ(byRef_.readUnsigned32(0x1008, 0, 0xDEADBEEFU), 0U);
+}
+
+// A `$NODEID` constant read with the node-id stays within its type's width, as its SDO upload
+// does: 0xF0 + 0x20 in an UNSIGNED8 is 0x10, by every read.
+TEST(NodeIdConstant, WrapsWithinItsWidthOnEveryRead) {
+  static constexpr uint8_t kConstants[1] = {0xF0};
+  static constexpr SubEntry kRows[1] = {
+      {0, 1, DataType::kUnsigned8, kReadable | kInRom | kNodeIdRelative, 1, kGroupNone, 0, 0}};
+  static constexpr Object kObjects[1] = {{0x2000, ObjectCode::kVar, 1, 0, 0}};
+  const Definition definition{kObjects, 1,      kRows,   kConstants, nullptr, nullptr, 0, 1,
+                              0,        "wrap", nullptr, nullptr,    nullptr, 0,       0};
+  uint8_t values[1] = {};
+  ObjectDictionary dictionary(definition, values);
+  dictionary.setNodeId(0x20);
+  const EntryRef ref = dictionary.find(0x2000, 0);
+  ASSERT_TRUE(ref.valid());
+  EXPECT_EQ(dictionary.readUnsigned(ref), 0x10U);
+  EXPECT_EQ(dictionary.readScalar(dictionary.scalar(ref)), 0x10U);
+  EXPECT_EQ(dictionary.readUnsigned32(0x2000, 0, 0xDEADBEEFU), 0x10U);
+  uint8_t wire[1] = {};
+  EXPECT_EQ(dictionary.read(ref, 0, wire, sizeof(wire)), 1U);
+  EXPECT_EQ(wire[0], 0x10U);
 }
 
 // storeUnsigned32() stores what the out-of-line store of a Scalar (storeNative() of the value,

@@ -268,9 +268,13 @@ uint32_t ObjectDictionary::readUnsigned32(const EntryRef& ref) const noexcept {
   if (nodeIdConstant(ref.attributes())) {
     raw += nodeId_;
   }
-  if ((typeBit & detail::kSignedTypes) != 0U && size - 1U < 3U) {  // 1 to 3 bytes: the sign
-    const auto unused = static_cast<unsigned>(32U - 8U * size);    // into the upper bits
-    raw = static_cast<uint32_t>(static_cast<int32_t>(raw << unused) >> unused);
+  if (size - 1U < 3U) {  // 1 to 3 bytes: within the value's width (a `$NODEID` constant's sum,
+    // as it goes on the wire), a signed value's sign in the upper bits
+    const auto unused = static_cast<unsigned>(32U - 8U * size);
+    raw <<= unused;
+    raw = (typeBit & detail::kSignedTypes) != 0U
+              ? static_cast<uint32_t>(static_cast<int32_t>(raw) >> unused)
+              : raw >> unused;
   }
   return raw;
 }

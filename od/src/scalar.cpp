@@ -33,6 +33,10 @@ uint64_t ObjectDictionary::readScalar(const Scalar& scalar) const noexcept {
   uint64_t raw = loadNative(block + scalar.offset_, scalar.size_);
   if ((scalar.flags_ & Scalar::kAddsNodeId) != 0U) {
     raw += nodeId_;
+    if (scalar.size_ < 8U) {  // within the value's width, as it goes on the wire
+      const auto low = static_cast<uint32_t>(raw);
+      raw = scalar.size_ >= 4U ? low : low & ((1U << (8U * scalar.size_)) - 1U);
+    }
   }
   return (scalar.flags_ & Scalar::kSigned) != 0U
              ? static_cast<uint64_t>(signExtend(raw, scalar.size_))
