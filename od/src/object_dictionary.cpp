@@ -286,7 +286,7 @@ uint64_t ObjectDictionary::readUnsigned(const EntryRef& ref) const noexcept {
     // Of up to 4 bytes, widened; 5 to 7 bytes hold 0 (and a `$NODEID` constant its node-id).
     return isSigned(type) ? static_cast<uint64_t>(static_cast<int32_t>(low)) : low;
   }
-  uint64_t raw = loadAligned<uint64_t>(address(ref));
+  auto raw = loadAligned<uint64_t>(address(ref));
   if (nodeIdConstant(ref.attributes())) {
     raw += nodeId_;
   }
