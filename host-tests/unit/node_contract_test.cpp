@@ -253,9 +253,8 @@ class PatchedExample {
     bool patched = false;
     for (od::DefaultValue& value : defaults_) {
       if (value.offset == offset) {
-        EXPECT_EQ(value.value(), original);
-        value.low = static_cast<uint16_t>(mapping);
-        value.high = static_cast<uint16_t>(mapping >> 16U);
+        EXPECT_EQ(value.value, original);
+        value.value = mapping;
         patched = true;
       }
     }

@@ -142,36 +142,45 @@ def default_bytes(entry: Entry) -> bytes:
 
 
 def default_records(device: Device, layout: Layout) -> tuple:
-    """The non-zero defaults of the RAM block as od::DefaultValue rows, in the order of their
-    offsets, and the bytes of those longer than 4 bytes: ([(offset expression, value, comment)],
-    bytes). The value's size is its row's."""
+    """The defaults of the RAM block as od::DefaultValue rows (every non-zero and every
+    `$NODEID` value), in the order of their offsets, and the bytes of those longer than 4 bytes:
+    ([(offset expression, value, size, flags, comment)], bytes)."""
     records, blob = [], bytearray()
     for entry in device.all_entries():
         if entry.in_rom or not entry.has_storage:
             continue
         data = default_bytes(entry)
-        if not any(data):
+        if not any(data) and not entry.node_id_relative:
             continue
         numeric = entry.data_type.kind in _MERGEABLE_KINDS
+        flags = (["kDefaultNumber"] if numeric else []) + \
+            (["kDefaultNodeId"] if entry.node_id_relative else [])
+        offset, label = layout.offsets[(entry.index, entry.sub)], f"0x{entry.index:04X}:{entry.sub}"
         if numeric and len(data) <= 4:
-            value = int.from_bytes(data, "little")
-        else:
-            value = len(blob)
-            blob += data
-        records.append((layout.offsets[(entry.index, entry.sub)], value,
-                        f"0x{entry.index:04X}:{entry.sub}"))
+            records.append((offset, int.from_bytes(data, "little"), len(data), flags, label))
+            continue
+        # Bytes: in pieces of at most 255 (DefaultValue::size), the pieces of zeros left out.
+        for start in range(0, len(data), _DEFAULT_PIECE):
+            piece = data[start:start + _DEFAULT_PIECE]
+            if any(piece) or entry.node_id_relative:
+                where = offset if start == 0 else f"{offset} + {start}"
+                records.append((where, len(blob), len(piece), ["kDefaultInBytes"] + flags, label))
+                blob += piece
     return records, bytes(blob)
 
 
 def _defaults_text(device: Device, layout: Layout) -> list:
     records, blob = default_records(device, layout)
-    lines = ["/// Every non-zero default of the RAM block (the rest is zero), by offset.",
+    lines = ["/// The defaults of the RAM block (the rest is zero), by offset.",
              "constexpr costa::od::DefaultValue kDefaults[] = {"]
-    for offset, value, label in records:
-        lines.append(f"{_INDENT * 2}{{{offset}, 0x{value & 0xFFFF:X}U, 0x{value >> 16:X}U}},"
-                     f"  // {label} = 0x{value:X}")
+    for offset, value, size, flags, label in records:
+        flag_text = " | ".join(f"costa::od::{f}" for f in flags) if flags else "0"
+        shown = (f"{size} bytes from kDefaultBytes[{value}]" if "kDefaultInBytes" in flags
+                 else f"0x{value:X}")
+        lines.append(f"{_INDENT * 2}{{0x{value:X}U, {offset}, {size}, {flag_text}}},"
+                     f"  // {label} = {shown}")
     if not records:
-        lines.append(f"{_INDENT * 2}{{0, 0, 0}},  // none: keeps the array non-empty")
+        lines.append(f"{_INDENT * 2}{{0, 0, 0, 0}},  // none: keeps the array non-empty")
     lines += ["};",
               "static_assert(costa::od::sortedByOffset(kDefaults), "
               "\"defaults in the order of their offsets\");"]
@@ -209,6 +218,7 @@ def _limits(device: Device) -> tuple:
 
 
 _MERGEABLE_KINDS = ("bool", "signed", "unsigned", "real")
+_DEFAULT_PIECE = 255  # the most bytes one od::DefaultValue holds
 
 
 def rows_of(obj, row_of: dict) -> list:
@@ -343,9 +353,14 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
                 if not actual.startswith(expected):  # not an item of one array
                     run_checks.append((actual, f"{expected} + {k * first.size}U",
                                        f"0x{entry.index:04X}:{entry.sub}"))
+    # An object without RAM values has the base of the next one's (Object::ramBase).
+    bases, following = {}, "sizeof(Values)"
+    for obj in reversed(device.objects):
+        following = layout.bases.get((obj.index, VALUES), following)
+        bases[obj.index] = following
     lines.append("constexpr costa::od::Object kObjects[] = {")
     for obj in device.objects:
-        ram = layout.bases.get((obj.index, VALUES), "0")
+        ram = bases[obj.index]
         lines.append(f"{_INDENT * 2}{{0x{obj.index:04X}, costa::od::ObjectCode::"
                      f"{OBJECT_CODES[obj.code]}, {placed.row_counts[obj.index]}, "
                      f"{placed.first_rows[obj.index]}, {ram}}},")

@@ -29,19 +29,31 @@ const DefaultValue* firstDefaultFrom(const Definition& definition, size_t offset
   return low;
 }
 
-// Writes one default of `row` (storage bytes, whether it is a number) at `target`.
-void writeDefault(const Definition& definition, const SubEntry& row, const DefaultValue& value,
-                  uint8_t* target) noexcept {
-  const size_t bytes = storageBytes(row);
-  if (isNumeric(row.type) && bytes <= 4U) {
-    storeNative32(target, value.value(), bytes);  // the number itself
+// Writes one default at `target`, adding `nodeId` to a `$NODEID` value.
+void writeDefault(const Definition& definition, const DefaultValue& value, uint8_t* target,
+                  uint8_t nodeId) noexcept {
+  const uint8_t addend = (value.flags & kDefaultNodeId) != 0U ? nodeId : 0U;
+  if ((value.flags & kDefaultInBytes) == 0U) {
+    storeNative32(target, value.value + addend, value.size);  // the number itself
     return;
   }
-  const uint8_t* stored = definition.defaultBytes + value.value();
-  if (!isNumeric(row.type) || kLittleEndianHost) {
-    copyBytes(target, stored, bytes);  // a longer number's little-endian bytes are its own here
+  const uint8_t* stored = definition.defaultBytes + value.value;
+  if (kLittleEndianHost || (value.flags & kDefaultNumber) == 0U) {
+    copyBytes(target, stored, value.size);  // a longer number's little-endian bytes are its own
+    addLittleEndian(target, value.size, addend);  // (a string's addend is 0: nothing)
   } else {
-    storeNative(target, loadLittleEndianBytes(stored, bytes), bytes);
+    storeNative(target, loadLittleEndianBytes(stored, value.size) + addend, value.size);
+  }
+}
+
+// Writes the defaults of the RAM bytes [begin, end) into `target`, which stands for byte
+// `begin` (zeroed before: the bytes no default covers stay zero).
+void writeDefaults(const Definition& definition, size_t begin, size_t end, uint8_t* target,
+                   uint8_t nodeId) noexcept {
+  const DefaultValue* last = definition.defaults + definition.defaultCount;
+  for (const DefaultValue* value = firstDefaultFrom(definition, begin);
+       value < last && value->offset < end; ++value) {
+    writeDefault(definition, *value, target + (value->offset - begin), nodeId);
   }
 }
 
@@ -50,38 +62,17 @@ void writeDefault(const Definition& definition, const SubEntry& row, const Defau
 void copyDefault(const Definition& definition, const EntryRef& ref, uint8_t* destination) noexcept {
   const size_t bytes = storageBytes(*ref.row);
   fillBytes(destination, 0, bytes);
-  const DefaultValue* value = firstDefaultFrom(definition, ref.offset());
-  if (value < definition.defaults + definition.defaultCount && value->offset == ref.offset()) {
-    writeDefault(definition, *ref.row, *value, destination);
-  }
+  writeDefaults(definition, ref.offset(), ref.offset() + bytes, destination, 0);
 }
 
-void ObjectDictionary::restoreRow(const Object& object, const SubEntry& row) noexcept {
-  if (row.type == DataType::kDomain || (row.attributes & kInRom) != 0U) {
-    return;
-  }
-  const size_t begin = valueOffset(object, row, 0);
-  const size_t end = begin + row.count * storageBytes(row);
+void ObjectDictionary::restoreBytes(size_t begin, size_t end) noexcept {
   fillBytes(values_ + begin, 0, end - begin);
-  const Definition& definition = *definition_;
-  const DefaultValue* last = definition.defaults + definition.defaultCount;
-  for (const DefaultValue* value = firstDefaultFrom(definition, begin);
-       value < last && value->offset < end; ++value) {
-    writeDefault(definition, row, *value, values_ + value->offset);
-  }
-  if ((row.attributes & kNodeIdRelative) != 0U) {
-    addNodeId(object, row);
-  }
+  writeDefaults(*definition_, begin, end, values_ + begin, nodeId_);
 }
 
 void ObjectDictionary::restoreDefault(const EntryRef& ref) noexcept {
-  uint8_t* value = ramAddress(ref);
-  if (value == nullptr) {
-    return;
-  }
-  copyDefault(*definition_, ref, value);
-  if (ref.has(kNodeIdRelative)) {
-    addNodeIdTo(value, ref.size());
+  if (ramAddress(ref) != nullptr) {
+    restoreBytes(ref.offset(), ref.offset() + storageBytes(*ref.row));
   }
 }
 
@@ -99,39 +90,35 @@ bool ObjectDictionary::restoreDefaultIfRefused(const EntryRef& ref) noexcept {
   return true;
 }
 
-void ObjectDictionary::addNodeId(const Object& object, const SubEntry& row) noexcept {
-  const size_t begin = valueOffset(object, row, 0);
-  const size_t end = begin + row.count * storageBytes(row);
-  for (size_t offset = begin; offset < end; offset += storageBytes(row)) {
-    addNodeIdTo(values_ + offset, row.size);
-  }
-}
-
-void ObjectDictionary::restoreRows(uint16_t first, uint16_t last, unsigned group) noexcept {
-  const Definition& definition = *definition_;
-  for (size_t i = 0; i < definition.objectCount; ++i) {
-    const Object& object = definition.objects[i];
-    if (object.index > last) {
-      break;  // objects are in the order of their indices
-    }
-    if (object.index < first) {
-      continue;
-    }
-    const SubEntry* rows = rowsOf(definition, object);
-    for (uint8_t r = 0; r < object.rowCount; ++r) {
-      if (group == kAnyGroup || rows[r].group == group) {
-        restoreRow(object, rows[r]);
-      }
-    }
-  }
-}
-
 void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
-  restoreRows(first, last, kAnyGroup);
+  // The values of the objects in [first, last] are the RAM block from the base of the first of
+  // them to the base of the object after the last (Object::ramBase).
+  const Definition& definition = *definition_;
+  const Object* object = definition.objects;
+  const Object* const end = object + definition.objectCount;
+  while (object != end && object->index < first) {
+    ++object;
+  }
+  const size_t begin = object != end ? object->ramBase : definition.valuesSize;
+  while (object != end && object->index <= last) {
+    ++object;
+  }
+  restoreBytes(begin, object != end ? object->ramBase : definition.valuesSize);
 }
 
 void ObjectDictionary::restoreGroupDefaults(uint8_t group) noexcept {
-  restoreRows(0, UINT16_MAX, group);
+  const Definition& definition = *definition_;
+  for (size_t i = 0; i < definition.objectCount; ++i) {
+    const Object& object = definition.objects[i];
+    const SubEntry* rows = rowsOf(definition, object);
+    for (uint8_t r = 0; r < object.rowCount; ++r) {
+      const SubEntry& row = rows[r];
+      if (row.group == group && row.type != DataType::kDomain && (row.attributes & kInRom) == 0U) {
+        const size_t begin = valueOffset(object, row, 0);
+        restoreBytes(begin, begin + row.count * storageBytes(row));
+      }
+    }
+  }
 }
 
 }  // namespace costa::od

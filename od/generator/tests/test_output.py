@@ -108,7 +108,9 @@ class ExampleOutputTest(unittest.TestCase):
         # A ROM row's offset is from the start of the constants block.
         self.assertIn("costa::od::kInRom, 4, costa::od::kGroupNone, 0, offsetof(Constants, "
                       "x1000_device_type)},", self.cpp)
-        self.assertIn("{0x1000, costa::od::ObjectCode::kVar, 1, 0, 0},", self.cpp)
+        # An object without RAM values has the base of the next object's.
+        self.assertIn("{0x1000, costa::od::ObjectCode::kVar, 1, 0, offsetof(Values, "
+                      "x1001_error_register)},", self.cpp)
         self.assertIn("{0, 1, costa::od::DataType::kDomain, costa::od::kReadable | "
                       "costa::od::kWritable, 0, costa::od::kGroupNone, 0, 0},", self.cpp)
         self.assertIn("costa::od::kReadable | costa::od::kWritable | costa::od::kNodeIdRelative"
@@ -163,15 +165,23 @@ class ExampleOutputTest(unittest.TestCase):
         for literal in ('"Costa Example",', "{-7, -7},", "{0x01U, 0x02U, 0xA0U},"):
             with self.subTest(literal=literal):
                 self.assertIn(literal, self.cpp)
-        # RAM defaults: the non-zero ones only, numbers of up to 4 bytes as their bits (two
-        # halves), the rest (64-bit numbers, strings, octets) as bytes of kDefaultBytes.
-        for record in ("{offsetof(Values, x1014_cob_id_emcy), 0x80U, 0x0U},  // 0x1014:0 = 0x80",
-                       "X2000Integers, int16), 0x8000U, 0x0U},  // 0x2000:2 = 0x8000",
-                       "X2000Integers, int32), 0x0U, 0x8000U},  // 0x2000:3 = 0x80000000",
-                       "X2000Integers, int64), 0x0U, 0x0U},  // 0x2000:4 = 0x0",
-                       "{offsetof(Values, x2001_real32_value), 0xFD0U, 0x4049U},  "
-                       "// 0x2001:0 = 0x40490FD0",
-                       "{offsetof(Values, x2003_serial_text), 0x18U, 0x0U},  // 0x2003:0 = 0x18"):
+        # RAM defaults: the non-zero ones and the `$NODEID` ones, each with its size and flags;
+        # numbers of up to 4 bytes as their bits, the rest (64-bit numbers, strings, octets) as
+        # bytes of kDefaultBytes.
+        for record in ("{0x80U, offsetof(Values, x1014_cob_id_emcy), 4, costa::od::kDefaultNumber"
+                       " | costa::od::kDefaultNodeId},  // 0x1014:0 = 0x80",
+                       "X2000Integers, int16), 2, costa::od::kDefaultNumber},  // 0x2000:2 = 0x8000",
+                       "{0x80000000U, offsetof(Values, x2000_integers) + offsetof(Values::"
+                       "X2000Integers, int32), 4, costa::od::kDefaultNumber},",
+                       "X2000Integers, int64), 8, costa::od::kDefaultInBytes | "
+                       "costa::od::kDefaultNumber},  // 0x2000:4 = 8 bytes from kDefaultBytes[0]",
+                       "{0x40490FD0U, offsetof(Values, x2001_real32_value), 4, "
+                       "costa::od::kDefaultNumber},  // 0x2001:0 = 0x40490FD0",
+                       "{0x18U, offsetof(Values, x2003_serial_text), 21, costa::od::kDefaultInBytes},"
+                       "  // 0x2003:0 = 21 bytes from kDefaultBytes[24]",
+                       # a `$NODEID` default of 0 has a record: the node-id is added to it
+                       "{0x0U, offsetof(Values, x200f_node_id_copy), 2, costa::od::kDefaultNumber"
+                       " | costa::od::kDefaultNodeId},"):
             with self.subTest(record=record):
                 self.assertIn(record, self.cpp)
         self.assertNotIn("x1001_error_register), 0x", self.cpp)  # default 0: no record
@@ -186,7 +196,8 @@ class ExampleOutputTest(unittest.TestCase):
         layout = zlib.crc32(rows.encode("ascii"))
         defaults = sum(1 for e in device.all_entries()
                        if not e.in_rom and e.has_storage
-                       and (any(e.default) if isinstance(e.default, bytes) else e.default != 0))
+                       and (e.node_id_relative or
+                            (any(e.default) if isinstance(e.default, bytes) else e.default != 0)))
         self.assertIn("const costa::od::Definition kDefinition = {\n    kObjects,\n    31,\n"
                       "    kRows,\n    &kConstants,\n    kDefaults,\n    kDefaultBytes,\n    "
                       f"{defaults},\n    sizeof(Values),\n"
@@ -255,7 +266,7 @@ class SmallOutputTest(unittest.TestCase):
         self.assertEqual(result.status, 0)
         header = result.files["test_od.hpp"]
         self.assertIn("struct Values {\n  uint8_t unused_;", header)
-        self.assertIn("{0, 0, 0},  // none: keeps the array non-empty", result.files["test_od.cpp"])
+        self.assertIn("{0, 0, 0, 0},  // none: keeps the array non-empty", result.files["test_od.cpp"])
         self.assertIn("    kDefaults,\n    kDefaultBytes,\n    0,\n", result.files["test_od.cpp"])
         self.assertIn('"test",', result.files["test_od.cpp"])  # no ProductName
         self.assertIn("kLargestValue = 4;", header)
@@ -264,6 +275,42 @@ class SmallOutputTest(unittest.TestCase):
         self.assertNotIn("kLimits", result.files["test_od.cpp"])
         self.assertIn("    nullptr,\n    nullptr,\n    kObjectSlots,\n    29,\n    0x00U,\n};",
                       result.files["test_od.cpp"])
+
+    def test_long_defaults_in_pieces_and_bases_of_objects_without_values(self):
+        # A default of more than 255 bytes: pieces of at most 255, those of zeros left out. An
+        # object without RAM values has the next one's base, the last such sizeof(Values).
+        text = "x" * 260
+        result = run_text(eds(f"""
+            [1000]
+            ParameterName=Device type
+            DataType=0x0007
+            AccessType=const
+            [2000]
+            ParameterName=Text
+            DataType=0x0009
+            AccessType=rw
+            DefaultValue={text}
+            [2001]
+            ParameterName=Octets
+            DataType=0x000A
+            AccessType=rw
+            DefaultValue={"00" * 300}01
+            [2002]
+            ParameterName=Last
+            DataType=0x0007
+            AccessType=const
+            """))
+        self.assertEqual(result.status, 0)
+        cpp = result.files["test_od.cpp"]
+        self.assertIn("{0x0U, offsetof(Values, x2000_text), 255, costa::od::kDefaultInBytes},", cpp)
+        self.assertIn("{0xFFU, offsetof(Values, x2000_text) + 255, 6, costa::od::kDefaultInBytes},",
+                      cpp)
+        self.assertIn("{0x105U, offsetof(Values, x2001_octets) + 255, 46, "
+                      "costa::od::kDefaultInBytes},", cpp)
+        self.assertNotIn("offsetof(Values, x2001_octets), 255", cpp)  # 255 zeros: no piece
+        self.assertIn("{0x1000, costa::od::ObjectCode::kVar, 1, 0, offsetof(Values, x2000_text)},",
+                      cpp)
+        self.assertIn("{0x2002, costa::od::ObjectCode::kVar, 1, 0, sizeof(Values)},", cpp)
 
     def test_objects_share_rows_only_with_their_constants(self):
         # Three records of one shape: the first two with the same constant sub-index 0 share it

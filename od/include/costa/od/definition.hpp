@@ -56,19 +56,26 @@ AbortCode checkIntegerLimits(DataType type, const uint8_t* source, size_t size,
 AbortCode checkLimits(DataType type, const uint8_t* source, size_t size,
                       const Limits& limits) noexcept;
 
-/// A non-zero default of the RAM block: the value at `offset`, as many bytes as the row holding
-/// it stores there (a VISIBLE_STRING's with its terminating zero). A number of up to 4 bytes is
-/// value() itself, in the CPU's byte order; anything longer (strings, octet strings, 64-bit
-/// numbers) is the little-endian bytes at Definition::defaultBytes + value(). Every value no
-/// DefaultValue covers defaults to zero (restoring zeroes a row's values, not the padding
-/// between them). A `$NODEID` default is held without the node-id. Six bytes: the value is held
-/// as two halves.
-struct DefaultValue {
-  uint16_t offset;
-  uint16_t low;   ///< value() & 0xFFFF
-  uint16_t high;  ///< value() >> 16
+/// Flag bits of a DefaultValue.
+enum DefaultFlag : uint8_t {
+  /// value is where the default's bytes begin in Definition::defaultBytes (little-endian for a
+  /// number); else value is the number itself (CPU byte order once stored).
+  kDefaultInBytes = 1U << 0,
+  kDefaultNumber = 1U << 1,  ///< A number (in CPU byte order in RAM), not a string's bytes.
+  kDefaultNodeId = 1U << 2,  ///< `$NODEID + value`: the node-id is added as it is restored.
+};
 
-  constexpr uint32_t value() const noexcept { return low | (uint32_t{high} << 16U); }
+/// A default of the RAM block: the `size` bytes at `offset`. A number of up to 4 bytes is
+/// `value` itself; anything longer (strings with a VISIBLE_STRING's terminating zero, octet
+/// strings, 64-bit numbers) is the little-endian bytes at Definition::defaultBytes + value
+/// (kDefaultInBytes), in pieces of at most 255 bytes. Every byte no DefaultValue covers defaults
+/// to zero; every `$NODEID` value has one (its value without the node-id, perhaps 0). Each says
+/// how many bytes it writes, so a range of the RAM block is restored without its rows.
+struct DefaultValue {
+  uint32_t value;
+  uint16_t offset;
+  uint8_t size;   ///< Bytes of the value in the RAM block.
+  uint8_t flags;  ///< DefaultFlag bits.
 };
 
 /// True when `defaults` are in strictly increasing order of offsets (the generator checks its
@@ -119,7 +126,10 @@ struct Object {
   ObjectCode code;
   uint8_t rowCount;
   uint16_t firstRow;
-  uint16_t ramBase;  ///< Offset of its values in the RAM block (its rows' offsets add to it).
+  /// Offset of its values in the RAM block (its rows' offsets add to it); of an object without
+  /// RAM values, that of the next object's (Definition::valuesSize after the last). So the
+  /// values of the objects from one to another are the RAM block from one's base to the other's.
+  uint16_t ramBase;
 };
 
 /// A whole dictionary. `objects` is sorted by index.
@@ -128,7 +138,7 @@ struct Definition {
   uint16_t objectCount;
   const SubEntry* rows;          ///< Every object's rows (Object::firstRow).
   const void* constants;         ///< ROM block holding `const` values.
-  const DefaultValue* defaults;  ///< The non-zero defaults of the RAM block, by offset.
+  const DefaultValue* defaults;  ///< Non-zero and `$NODEID` defaults of the RAM block, by offset.
   const uint8_t* defaultBytes;   ///< Bytes of the defaults longer than 4 bytes.
   uint16_t defaultCount;
   uint32_t valuesSize;     ///< Size of the RAM values block in bytes.
@@ -169,13 +179,17 @@ constexpr uint32_t valueOffset(const Object& object, const SubEntry& row, uint32
 }
 
 /// True when the RAM values of `objects` lie in the order of their indices and sub-indices, as
-/// the generator lays them out (it checks its tables with it at compile time): the values of a
-/// range of indices are one range of the RAM block, and a dump of the block reads in the
+/// the generator lays them out (it checks its tables with it at compile time), and every
+/// object's values lie between its Object::ramBase and the next object's: the values of a range
+/// of indices are one range of the RAM block, and a dump of the block reads in the
 /// dictionary's order.
 template <size_t N>
 constexpr bool ramInIndexOrder(const Object (&objects)[N], const SubEntry* rows) noexcept {
   uint32_t end = 0;
   for (size_t i = 0; i < N; ++i) {
+    if (objects[i].ramBase < end || (i > 0U && objects[i].ramBase < objects[i - 1U].ramBase)) {
+      return false;
+    }
     for (unsigned r = 0; r < objects[i].rowCount; ++r) {
       const SubEntry& row = rows[objects[i].firstRow + r];
       if ((row.attributes & kInRom) != 0U || row.type == DataType::kDomain) {

@@ -192,24 +192,9 @@ class ObjectDictionary {
   const uint8_t* address(const EntryRef& ref) const noexcept;
 
  private:
-  /// Restores the defaults of every RAM row of the objects in [first, last] that belongs to
-  /// `group` (kAnyGroup: to any), row by row.
-  static constexpr unsigned kAnyGroup = 0x100;
-  void restoreRows(uint16_t first, uint16_t last, unsigned group) noexcept;
-  /// Zeroes the values of one RAM row, writes the non-zero defaults among them, adds the node-id
-  /// to a `$NODEID` row.
-  void restoreRow(const Object& object, const SubEntry& row) noexcept;
-  /// Adds the node-id to every value of a `$NODEID` row of `object` (after its defaults were
-  /// written).
-  void addNodeId(const Object& object, const SubEntry& row) noexcept;
-  /// Adds the node-id to the number of `size` bytes at `value` (native byte order).
-  void addNodeIdTo(uint8_t* value, size_t size) const noexcept {
-    if constexpr (kLittleEndianHost) {
-      addLittleEndian(value, size, nodeId_);  // the native bytes are little-endian
-    } else {
-      storeNative(value, loadNative(value, size) + nodeId_, size);
-    }
-  }
+  /// Zeroes the bytes [begin, end) of the RAM block and writes the defaults among them (with
+  /// the node-id for `$NODEID` values).
+  void restoreBytes(size_t begin, size_t end) noexcept;
   AbortCode writeChecked(const EntryRef& ref, const uint8_t* source, size_t length) noexcept;
   /// storeUnsigned() of the value whose low and high 32 bits are `low` and `high`.
   void storeHalves(const EntryRef& ref, uint32_t low, uint32_t high) noexcept;
