@@ -173,8 +173,8 @@ size_t ObjectDictionary::read(const EntryRef& ref, size_t offset, uint8_t* desti
       storeLittleEndian(wire, raw, ref.size());
     }
     copyBytes(destination, wire + offset, count);
-  } else if (offset == 0U && count == ref.size() && isNumeric(ref.type())) {
-    copyNumber(destination, source, count);  // the usual read: a whole number
+  } else if (kExpandFastPaths && offset == 0U && count == ref.size() && isNumeric(ref.type())) {
+    copyNumber(destination, source, count);  // the usual read: a whole number (for size: below)
   } else {
     copyBytes(destination, source + offset, count);
   }
@@ -235,7 +235,9 @@ AbortCode ObjectDictionary::writeChecked(const EntryRef& ref, const uint8_t* sou
     return verdict;
   }
   uint8_t* target = values_ + ref.offset();
-  if (isNumeric(ref.type())) {
+  // A number's wire bytes are its RAM bytes on a little-endian CPU: built for size, they take
+  // the copy below (check() passed: the length is the size).
+  if (isNumeric(ref.type()) && (kExpandFastPaths || !kLittleEndianHost)) {
     if (kLittleEndianHost) {
       copyNumber(target, source, ref.size());
     } else {
