@@ -2,9 +2,11 @@
 // is applied whole or not at all, and what does not fit (hooks, listeners, error conditions, a
 // mapping) is refused and counted, never silently lost.
 // Example RPDO2: COB-ID 0x301, maps 0x2004:03 (INTEGER32), 0x2005:01 and 0x2005:02 (UNSIGNED16).
+#include <algorithm>
 #include <ostream>
 #include <vector>
 
+#include "costa/od/little_endian.hpp"
 #include "dictionary_node_bus.hpp"
 #include "example_fixture.hpp"
 #include "example_od.hpp"
@@ -250,22 +252,40 @@ class PatchedExample {
     const od::ObjectDictionary dictionary(gen::example::kDefinition, &values);
     const size_t offset = dictionary.find(mappingIndex, subIndex).offset();
     defaults_.assign(definition_.defaults, definition_.defaults + definition_.defaultCount);
+    // A mapping value (beyond 16 bits) is held as bytes: the patched record gets bytes of its
+    // own, after a copy of every record's.
+    size_t end = 0;
+    for (const od::DefaultValue& value : defaults_) {
+      if ((value.flags & od::kDefaultInBytes) != 0U) {
+        end = std::max<size_t>(end, value.value + value.size);
+      }
+    }
+    bytes_.assign(definition_.defaultBytes, definition_.defaultBytes + end);
     bool patched = false;
     for (od::DefaultValue& value : defaults_) {
       if (value.offset == offset) {
-        EXPECT_EQ(value.value, original);
-        value.value = mapping;
+        EXPECT_EQ(value.flags & od::kDefaultInBytes, od::kDefaultInBytes);
+        EXPECT_EQ(value.size, 4U);
+        EXPECT_EQ(loadU32(definition_.defaultBytes + value.value), original);
+        value.flags = od::kDefaultInBytes | od::kDefaultNumber;
+        value.size = 4;
+        value.value = static_cast<uint16_t>(bytes_.size());
+        for (unsigned i = 0; i < 4U; ++i) {
+          bytes_.push_back(static_cast<uint8_t>(mapping >> (8U * i)));
+        }
         patched = true;
       }
     }
     EXPECT_TRUE(patched);
     definition_.defaults = defaults_.data();
+    definition_.defaultBytes = bytes_.data();
   }
   const od::Definition& definition() const { return definition_; }
 
  private:
   od::Definition definition_;
   std::vector<od::DefaultValue> defaults_;
+  std::vector<uint8_t> bytes_;
 };
 
 using ExampleDictionaryBus = DictionaryNodeBus<gen::example::Values, gen::example::Capacity>;

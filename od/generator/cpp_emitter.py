@@ -144,7 +144,8 @@ def default_bytes(entry: Entry) -> bytes:
 def default_records(device: Device, layout: Layout) -> tuple:
     """The defaults of the RAM block as od::DefaultValue rows (every non-zero and every
     `$NODEID` value), in the order of their offsets, and the bytes of those longer than 4 bytes:
-    ([(offset expression, value, size, flags, comment)], bytes)."""
+    ([(offset expression, value, size, flags, comment)], bytes). A number of up to 4 bytes
+    whose value fits in 16 bits is held as itself, anything else as bytes."""
     records, blob = [], bytearray()
     for entry in device.all_entries():
         if entry.in_rom or not entry.has_storage:
@@ -156,16 +157,21 @@ def default_records(device: Device, layout: Layout) -> tuple:
         flags = (["kDefaultNumber"] if numeric else []) + \
             (["kDefaultNodeId"] if entry.node_id_relative else [])
         offset, label = layout.offsets[(entry.index, entry.sub)], f"0x{entry.index:04X}:{entry.sub}"
-        if numeric and len(data) <= 4:
-            records.append((offset, int.from_bytes(data, "little"), len(data), flags, label))
+        number = int.from_bytes(data, "little")
+        if numeric and len(data) <= 4 and number <= 0xFFFF:
+            records.append((offset, number, len(data), flags, label))
             continue
-        # Bytes: in pieces of at most 255 (DefaultValue::size), the pieces of zeros left out.
+        # Bytes: in pieces of at most 255 (DefaultValue::size), the pieces of zeros left out;
+        # a piece whose bytes are in kDefaultBytes already refers to them.
         for start in range(0, len(data), _DEFAULT_PIECE):
             piece = data[start:start + _DEFAULT_PIECE]
             if any(piece) or entry.node_id_relative:
                 where = offset if start == 0 else f"{offset} + {start}"
-                records.append((where, len(blob), len(piece), ["kDefaultInBytes"] + flags, label))
-                blob += piece
+                at = blob.find(piece)
+                if at < 0:
+                    at = len(blob)
+                    blob += piece
+                records.append((where, at, len(piece), ["kDefaultInBytes"] + flags, label))
     return records, bytes(blob)
 
 
@@ -189,7 +195,9 @@ def _defaults_text(device: Device, layout: Layout) -> list:
         lines.append(_INDENT * 2 + ", ".join(f"0x{b:02X}" for b in blob[start:start + 16]) + ",")
     if not blob:
         lines.append(f"{_INDENT * 2}0,  // none: keeps the array non-empty")
-    lines += ["};", ""]
+    lines += ["};",
+              "static_assert(sizeof(kDefaultBytes) <= 0xFFFFU, \"DefaultValue::value is a 16-bit "
+              "offset into kDefaultBytes\");", ""]
     return lines, len(records)
 
 

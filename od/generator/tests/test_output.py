@@ -166,26 +166,28 @@ class ExampleOutputTest(unittest.TestCase):
             with self.subTest(literal=literal):
                 self.assertIn(literal, self.cpp)
         # RAM defaults: the non-zero ones and the `$NODEID` ones, each with its size and flags;
-        # numbers of up to 4 bytes as their bits, the rest (64-bit numbers, strings, octets) as
-        # bytes of kDefaultBytes.
+        # numbers of up to 4 bytes that fit in 16 bits as themselves, the rest (larger numbers,
+        # strings, octets) as bytes of kDefaultBytes.
         for record in ("{0x80U, offsetof(Values, x1014_cob_id_emcy), 4, costa::od::kDefaultNumber"
                        " | costa::od::kDefaultNodeId},  // 0x1014:0 = 0x80",
                        "X2000Integers, int16), 2, costa::od::kDefaultNumber},  // 0x2000:2 = 0x8000",
-                       "{0x80000000U, offsetof(Values, x2000_integers) + offsetof(Values::"
-                       "X2000Integers, int32), 4, costa::od::kDefaultNumber},",
+                       "{0x14U, offsetof(Values, x2000_integers) + offsetof(Values::"
+                       "X2000Integers, int32), 4, costa::od::kDefaultInBytes | "
+                       "costa::od::kDefaultNumber},  // 0x2000:3 = 4 bytes from kDefaultBytes[20]",
                        "X2000Integers, int64), 8, costa::od::kDefaultInBytes | "
-                       "costa::od::kDefaultNumber},  // 0x2000:4 = 8 bytes from kDefaultBytes[0]",
-                       "{0x40490FD0U, offsetof(Values, x2001_real32_value), 4, "
-                       "costa::od::kDefaultNumber},  // 0x2001:0 = 0x40490FD0",
-                       "{0x18U, offsetof(Values, x2003_serial_text), 21, costa::od::kDefaultInBytes},"
-                       "  // 0x2003:0 = 21 bytes from kDefaultBytes[24]",
+                       "costa::od::kDefaultNumber},  // 0x2000:4 = 8 bytes from kDefaultBytes[24]",
+                       "{0x2CU, offsetof(Values, x2001_real32_value), 4, "
+                       "costa::od::kDefaultInBytes | costa::od::kDefaultNumber},",
+                       "{0x38U, offsetof(Values, x2003_serial_text), 21, costa::od::kDefaultInBytes},"
+                       "  // 0x2003:0 = 21 bytes from kDefaultBytes[56]",
                        # a `$NODEID` default of 0 has a record: the node-id is added to it
                        "{0x0U, offsetof(Values, x200f_node_id_copy), 2, costa::od::kDefaultNumber"
                        " | costa::od::kDefaultNodeId},"):
             with self.subTest(record=record):
                 self.assertIn(record, self.cpp)
         self.assertNotIn("x1001_error_register), 0x", self.cpp)  # default 0: no record
-        self.assertIn("0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0xFF, 0xFF", self.cpp)
+        self.assertIn("0x00, 0x00, 0x00, 0x80, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80,\n"
+                      "    0xFF, 0xFF", self.cpp)
         self.assertIn('static_assert(costa::od::sortedByOffset(kDefaults), "defaults in the '
                       'order of their offsets");', self.cpp)
 
@@ -311,6 +313,33 @@ class SmallOutputTest(unittest.TestCase):
         self.assertIn("{0x1000, costa::od::ObjectCode::kVar, 1, 0, offsetof(Values, x2000_text)},",
                       cpp)
         self.assertIn("{0x2002, costa::od::ObjectCode::kVar, 1, 0, sizeof(Values)},", cpp)
+
+    def test_equal_default_bytes_are_held_once(self):
+        # Numbers beyond 16 bits are bytes of kDefaultBytes; equal ones refer to the same bytes.
+        result = run_text(eds("""
+            [2000]
+            ParameterName=First
+            DataType=0x0007
+            AccessType=rw
+            DefaultValue=0x80000000
+            [2001]
+            ParameterName=Second
+            DataType=0x0007
+            AccessType=rw
+            DefaultValue=0x80000000
+            [2002]
+            ParameterName=Small
+            DataType=0x0007
+            AccessType=rw
+            DefaultValue=0xFFFF
+            """))
+        self.assertEqual(result.status, 0)
+        cpp = result.files["test_od.cpp"]
+        for name in ("x2000_first", "x2001_second"):
+            self.assertIn(f"{{0x0U, offsetof(Values, {name}), 4, costa::od::kDefaultInBytes | "
+                          "costa::od::kDefaultNumber},", cpp)
+        self.assertIn("{0xFFFFU, offsetof(Values, x2002_small), 4, costa::od::kDefaultNumber},", cpp)
+        self.assertIn("constexpr uint8_t kDefaultBytes[] = {\n    0x00, 0x00, 0x00, 0x80,\n};", cpp)
 
     def test_objects_share_rows_only_with_their_constants(self):
         # Three records of one shape: the first two with the same constant sub-index 0 share it

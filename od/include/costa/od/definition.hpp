@@ -65,14 +65,15 @@ enum DefaultFlag : uint8_t {
   kDefaultNodeId = 1U << 2,  ///< `$NODEID + value`: the node-id is added as it is restored.
 };
 
-/// A default of the RAM block: the `size` bytes at `offset`. A number of up to 4 bytes is
-/// `value` itself; anything longer (strings with a VISIBLE_STRING's terminating zero, octet
-/// strings, 64-bit numbers) is the little-endian bytes at Definition::defaultBytes + value
-/// (kDefaultInBytes), in pieces of at most 255 bytes. Every byte no DefaultValue covers defaults
-/// to zero; every `$NODEID` value has one (its value without the node-id, perhaps 0). Each says
-/// how many bytes it writes, so a range of the RAM block is restored without its rows.
+/// A default of the RAM block: the `size` bytes at `offset`. A number of up to 4 bytes whose
+/// value fits in 16 bits is `value` itself; anything else (larger numbers, strings with a
+/// VISIBLE_STRING's terminating zero, octet strings) is the little-endian bytes at
+/// Definition::defaultBytes + value (kDefaultInBytes), in pieces of at most 255 bytes. Every
+/// byte no DefaultValue covers defaults to zero; every `$NODEID` value has one (its value
+/// without the node-id, perhaps 0). Each says how many bytes it writes, so a range of the RAM
+/// block is restored without its rows. Six bytes.
 struct DefaultValue {
-  uint32_t value;
+  uint16_t value;
   uint16_t offset;
   uint8_t size;   ///< Bytes of the value in the RAM block.
   uint8_t flags;  ///< DefaultFlag bits.
