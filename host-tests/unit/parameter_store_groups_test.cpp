@@ -114,8 +114,9 @@ struct ManyGroupsTables {
                              1,
                              static_cast<uint8_t>(i + 1U),
                              0,
-                             i};
-      objects[i] = od::Object{static_cast<uint16_t>(0x2000U + i), od::ObjectCode::kVar, 1, i, 0};
+                             0};
+      // Value i at offset i: its object's base (the tables satisfy od::ramInIndexOrder()).
+      objects[i] = od::Object{static_cast<uint16_t>(0x2000U + i), od::ObjectCode::kVar, 1, i, i};
     }
     definition = od::Definition{objects, kCount,   subs,    constants, nullptr, nullptr, 0, kCount,
                                 0x1234U, "groups", nullptr, nullptr,   nullptr, 0,       0};

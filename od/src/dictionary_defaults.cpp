@@ -103,7 +103,10 @@ void ObjectDictionary::restoreDefaults(uint16_t first, uint16_t last) noexcept {
   while (object != end && object->index <= last) {
     ++object;
   }
-  restoreBytes(begin, object != end ? object->ramBase : definition.valuesSize);
+  const size_t stop = object != end ? object->ramBase : definition.valuesSize;
+  if (begin < stop) {  // (a table made by hand without ramInIndexOrder() restores nothing)
+    restoreBytes(begin, stop);
+  }
 }
 
 void ObjectDictionary::restoreGroupDefaults(uint8_t group) noexcept {

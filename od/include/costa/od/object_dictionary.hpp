@@ -172,7 +172,9 @@ class ObjectDictionary {
   /// The same with a value of 32 bits (storeUnsigned32(ref, value)).
   bool storeUnsigned32(uint16_t index, uint8_t subIndex, uint32_t value) noexcept;
 
-  /// Copies defaults into every RAM entry whose index is in [first, last].
+  /// Copies defaults into every RAM entry whose index is in [first, last]: the RAM block from
+  /// the base of the first such object to that of the next (Object::ramBase), so a definition
+  /// made by hand must satisfy ramInIndexOrder() as the generated ones do.
   void restoreDefaults(uint16_t first, uint16_t last) noexcept;
   /// Copies defaults into every RAM entry of storage group `group`.
   void restoreGroupDefaults(uint8_t group) noexcept;
