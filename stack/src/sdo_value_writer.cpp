@@ -35,17 +35,14 @@ AbortCode SdoValueWriter::begin(const od::EntryRef& ref, size_t indicatedSize) n
   indicated_ = indicatedSize;
   received_ = 0;
   flushed_ = 0;
+  streamOpen_ = false;
   if (!streamed_) {
-    const AbortCode sized = indicatedSize == kSizeNotIndicated
-                                ? AbortCode::kNone
-                                : checkIndicatedSize(ref, indicatedSize, bufferSize_);
-    streamOpen_ = false;
-    return sized;
+    return indicatedSize == kSizeNotIndicated ? AbortCode::kNone
+                                              : checkIndicatedSize(ref, indicatedSize, bufferSize_);
   }
   const AbortCode started = access_.writeStream(ref, 0, buffer_, 0, false, indicatedSize);
   if (started != AbortCode::kNone) {
     access_.abortWriteStream(ref, started);
-    streamOpen_ = false;
     return started;
   }
   streamOpen_ = true;
