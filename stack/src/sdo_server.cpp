@@ -227,7 +227,8 @@ void SdoServer::serve(const uint8_t* request, Microseconds now) noexcept {
   }
 }
 
-void SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs) noexcept {
+COSTA_SDO_RARE_HANDLER void SdoServer::onOtherRequest(const uint8_t* request,
+                                                      uint8_t ccs) noexcept {
   if (isClientAbort(request)) {
     endTransfer(static_cast<AbortCode>(loadU32(request + 4)));
     return;
@@ -251,7 +252,7 @@ void SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs) noexcept {
   }
 }
 
-void SdoServer::initiate(const uint8_t* request, uint8_t ccs) noexcept {
+COSTA_SDO_RARE_HANDLER void SdoServer::initiate(const uint8_t* request, uint8_t ccs) noexcept {
   if constexpr (features::kSdoBlockTransfer) {
     if (ccs == kCcsBlockDownload) {
       initiateBlockDownload(request);
@@ -269,7 +270,7 @@ void SdoServer::initiate(const uint8_t* request, uint8_t ccs) noexcept {
   }
 }
 
-void SdoServer::downloadSegment(const uint8_t* request) noexcept {
+COSTA_SDO_RARE_HANDLER void SdoServer::downloadSegment(const uint8_t* request) noexcept {
   if ((request[0] & kToggleBit) != toggleBit_) {
     abortTransfer(AbortCode::kToggleBit);
     return;
