@@ -122,7 +122,7 @@ bool SdoServer::locateDownload(const uint8_t* request) noexcept {
   return true;
 }
 
-void SdoServer::initiateDownload(const uint8_t* request) noexcept {
+COSTA_SDO_SERVE_PART void SdoServer::initiateDownload(const uint8_t* request) noexcept {
   if (!locateDownload(request)) {  // (one locate for both kinds: expanded once)
     return;
   }
@@ -227,8 +227,7 @@ void SdoServer::serve(const uint8_t* request, Microseconds now) noexcept {
   }
 }
 
-COSTA_SDO_RARE_HANDLER void SdoServer::onOtherRequest(const uint8_t* request,
-                                                      uint8_t ccs) noexcept {
+COSTA_SDO_SERVE_PART void SdoServer::onOtherRequest(const uint8_t* request, uint8_t ccs) noexcept {
   if (isClientAbort(request)) {
     endTransfer(static_cast<AbortCode>(loadU32(request + 4)));
     return;
@@ -252,7 +251,7 @@ COSTA_SDO_RARE_HANDLER void SdoServer::onOtherRequest(const uint8_t* request,
   }
 }
 
-COSTA_SDO_RARE_HANDLER void SdoServer::initiate(const uint8_t* request, uint8_t ccs) noexcept {
+COSTA_SDO_SERVE_PART void SdoServer::initiate(const uint8_t* request, uint8_t ccs) noexcept {
   if constexpr (features::kSdoBlockTransfer) {
     if (ccs == kCcsBlockDownload) {
       initiateBlockDownload(request);
@@ -270,7 +269,7 @@ COSTA_SDO_RARE_HANDLER void SdoServer::initiate(const uint8_t* request, uint8_t 
   }
 }
 
-COSTA_SDO_RARE_HANDLER void SdoServer::downloadSegment(const uint8_t* request) noexcept {
+COSTA_SDO_SERVE_PART void SdoServer::downloadSegment(const uint8_t* request) noexcept {
   if ((request[0] & kToggleBit) != toggleBit_) {
     abortTransfer(AbortCode::kToggleBit);
     return;

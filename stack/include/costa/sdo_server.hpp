@@ -22,13 +22,13 @@
 #include "costa/time.hpp"
 #include "costa/transmit_path.hpp"
 
-// A handler of rare requests that serve() alone calls (through onOtherRequest()): built for
-// size, expanded into its caller, which saves a call and a stack frame each; built for speed, a
-// call of its own, so that serve() needs no stack frame for the frequent requests.
+// A handler that serve() alone calls (directly or through onOtherRequest()): built for size,
+// expanded into its caller, which saves a call and a stack frame each; built for speed, a call
+// of its own, so that serve() needs no stack frame for the frequent requests.
 #if defined(__OPTIMIZE_SIZE__)
-#define COSTA_SDO_RARE_HANDLER [[gnu::always_inline]] inline
+#define COSTA_SDO_SERVE_PART [[gnu::always_inline]] inline
 #else
-#define COSTA_SDO_RARE_HANDLER
+#define COSTA_SDO_SERVE_PART
 #endif
 
 namespace costa {
@@ -88,7 +88,7 @@ class SdoServer {
 
   /// A request other than the frequent ones: aborts, download segments, block transfers, and
   /// requests that do not fit the transfer's state.
-  COSTA_SDO_RARE_HANDLER void onOtherRequest(const uint8_t* request, uint8_t ccs) noexcept;
+  COSTA_SDO_SERVE_PART void onOtherRequest(const uint8_t* request, uint8_t ccs) noexcept;
   /// The deadline of the client's next request, from now (lastCall_: every request, every
   /// process() sets it first, so the handlers need no `now` of their own); the node's clock is
   /// told.
@@ -102,13 +102,13 @@ class SdoServer {
   /// nextDeadline()), so it need not be told again.
   void extendTimeout() noexcept { deadline_ = at(lastCall_, timeout_); }
   /// A request while no transfer runs: starts one, or aborts.
-  COSTA_SDO_RARE_HANDLER void initiate(const uint8_t* request, uint8_t ccs) noexcept;
+  COSTA_SDO_SERVE_PART void initiate(const uint8_t* request, uint8_t ccs) noexcept;
   /// A request shorter than 8 bytes, or an RTR frame: served as 8 bytes, the missing ones 0,
   /// when the profile serves its length (SdoProfile::shortestRequest: onRequest() once more,
   /// with 8 bytes), else ignored (false).
   [[gnu::noinline]] bool onShortRequest(const CanFrame& frame, Microseconds now) noexcept;
   /// An initiate download request while no transfer runs.
-  void initiateDownload(const uint8_t* request) noexcept;
+  COSTA_SDO_SERVE_PART void initiateDownload(const uint8_t* request) noexcept;
   /// Locates the entry of an initiate download request (index_, subIndex_, ref_); false after
   /// the abort when it cannot be written.
   COSTA_HOT_INLINE bool locateDownload(const uint8_t* request) noexcept;
@@ -125,7 +125,7 @@ class SdoServer {
   void finishExpedited(const uint8_t* request, AbortCode verdict) noexcept;
   /// The initiate download response, or the abort of the request when `verdict` is one.
   void answerDownload(AbortCode verdict) noexcept;
-  COSTA_SDO_RARE_HANDLER void downloadSegment(const uint8_t* request) noexcept;
+  COSTA_SDO_SERVE_PART void downloadSegment(const uint8_t* request) noexcept;
   /// An initiate upload request while no transfer runs.
   void initiateUpload(const uint8_t* request) noexcept;
   /// Locates the entry of an upload (index_, subIndex_) for reading, into ref_, and begins the
