@@ -2,13 +2,9 @@
 
 namespace costa {
 
-AbortCode SdoValueReader::beginStreamed(size_t* size) noexcept {
+AbortCode SdoValueReader::beginStreamed() noexcept {
   size_t produced = 0;
-  const AbortCode sized = access_.readStream(*ref_, 0, buffer_, 0, &produced, &size_);
-  if (sized == AbortCode::kNone) {
-    *size = size_;
-  }
-  return sized;
+  return access_.readStream(*ref_, 0, buffer_, 0, &produced, &size_);
 }
 
 AbortCode SdoValueReader::readStreamed(size_t offset, uint8_t* destination, size_t count) noexcept {

@@ -25,18 +25,20 @@ class SdoValueReader {
   /// transfer's own (the server's), which stays as it is until the transfer ends.
   AbortCode begin(const od::EntryRef& ref, size_t* size) noexcept {
     streamed_ = sdoStreams(ref, bufferSize_);
+    AbortCode begun = AbortCode::kNone;
     if (streamed_) {
       ref_ = &ref;  // the hook is asked for every piece
       padded_ = false;
-      return beginStreamed(size);
-    }
-    size_ = access_.dictionary().readWhole(ref, buffer_);
-    padded_ = kExpandFastPaths && size_ + kZeroTail <= bufferSize_;  // (for the fast segments)
-    if (padded_) {
-      fillBytes(buffer_ + size_, 0, kZeroTail);
+      begun = beginStreamed();
+    } else {
+      size_ = access_.dictionary().readWhole(ref, buffer_);
+      padded_ = kExpandFastPaths && size_ + kZeroTail <= bufferSize_;  // (for the fast segments)
+      if (padded_) {
+        fillBytes(buffer_ + size_, 0, kZeroTail);
+      }
     }
     *size = size_;
-    return AbortCode::kNone;
+    return begun;
   }
 
   /// Copies bytes [offset, offset + count) of the value: the hook's refusal, or kNoData when the
@@ -64,7 +66,8 @@ class SdoValueReader {
   const uint8_t* snapshot() const noexcept { return buffer_; }
 
  private:
-  AbortCode beginStreamed(size_t* size) noexcept;
+  /// Asks the streaming hook for the value's size (size_).
+  AbortCode beginStreamed() noexcept;
   AbortCode readStreamed(size_t offset, uint8_t* destination, size_t count) noexcept;
 
   ObjectAccess& access_;
