@@ -79,9 +79,7 @@ bool SdoServer::valid() const noexcept {
 }
 
 Microseconds SdoServer::nextDeadline() const noexcept {
-  if (state_ == State::kIdle) {
-    return kNever;
-  }
+  // Idle, deadline_ is kNever (valid()).
   if constexpr (features::kSdoBlockTransfer) {
     if (blockSegmentsReady()) {
       return lastCall_;
@@ -92,7 +90,7 @@ Microseconds SdoServer::nextDeadline() const noexcept {
 
 void SdoServer::process(Microseconds now) noexcept {
   lastCall_ = now;
-  if (state_ != State::kIdle && reached(now, deadline_)) {
+  if (reached(now, deadline_)) {  // never while idle: deadline_ is kNever (valid())
     abortTransfer(AbortCode::kTimeout);
     return;
   }
