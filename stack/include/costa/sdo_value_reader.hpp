@@ -79,4 +79,15 @@ class SdoValueReader {
   size_t size_ = 0;
 };
 
+inline AbortCode SdoValueReader::readStreamed(size_t offset, uint8_t* destination,
+                                              size_t count) noexcept {
+  size_t produced = 0;
+  size_t total = 0;
+  const AbortCode got = access_.readStream(*ref_, offset, destination, count, &produced, &total);
+  if (got != AbortCode::kNone) {
+    return got;
+  }
+  return produced == count ? AbortCode::kNone : AbortCode::kNoData;
+}
+
 }  // namespace costa
