@@ -198,6 +198,11 @@ bool SdoServer::onShortRequest(const CanFrame& frame, Microseconds now) noexcept
 // NOLINTNEXTLINE(misc-no-recursion): onShortRequest() calls back once, with 8 bytes
 bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
   if (frame.dlc != 8U || frame.rtr) {
+    if constexpr (!features::kQuirkProfiles) {
+      if (profile_.shortestRequest >= 8U) {
+        return false;  // the fixed profile serves 8 bytes only (CiA 301): the frame is ignored
+      }
+    }
     return onShortRequest(frame, now);
   }
   serve(frame.data, now);
