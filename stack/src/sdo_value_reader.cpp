@@ -1,10 +1,4 @@
+// SdoValueReader is defined in its header (inline: built for size, each of its functions is
+// expanded into, or shares one copy with, the server's few callers). This unit compiles the
+// header on its own, which checks that it includes what it uses.
 #include "costa/sdo_value_reader.hpp"
-
-namespace costa {
-
-AbortCode SdoValueReader::beginStreamed() noexcept {
-  size_t produced = 0;
-  return access_.readStream(*ref_, 0, buffer_, 0, &produced, &size_);
-}
-
-}  // namespace costa

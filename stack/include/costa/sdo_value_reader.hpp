@@ -79,6 +79,11 @@ class SdoValueReader {
   size_t size_ = 0;
 };
 
+inline AbortCode SdoValueReader::beginStreamed() noexcept {
+  size_t produced = 0;
+  return access_.readStream(*ref_, 0, buffer_, 0, &produced, &size_);
+}
+
 inline AbortCode SdoValueReader::readStreamed(size_t offset, uint8_t* destination,
                                               size_t count) noexcept {
   size_t produced = 0;
