@@ -18,10 +18,10 @@ uint8_t segmentHeader(uint8_t toggleBit, size_t count, bool last) noexcept {
 }  // namespace
 
 void SdoServer::initiateUpload(const uint8_t* request) noexcept {
-  index_ = loadU16(request + 1);
-  subIndex_ = request[3];
   ReadRequest details;
   copyBytes(details.requestData, request + 4, 4);
+  index_ = loadU16(request + 1);
+  subIndex_ = request[3];
   if constexpr (features::kSdoBlockTransfer && !kExpandFastPaths) {
     size_t size = 0;
     const AbortCode begun = beginUpload(details, &size);  // the block upload's copy
