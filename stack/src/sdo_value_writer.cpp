@@ -50,7 +50,8 @@ AbortCode SdoValueWriter::begin(const od::EntryRef& ref, size_t indicatedSize) n
 }
 
 AbortCode SdoValueWriter::append(const uint8_t* data, size_t length) noexcept {
-  if (indicated_ != kSizeNotIndicated && received_ + length > indicated_) {
+  // (No value reaches kSizeNotIndicated, SIZE_MAX: an unindicated size is never exceeded.)
+  if (received_ + length > indicated_) {
     return AbortCode::kLengthMismatch;
   }
   // A buffered value must fit the buffer; a streamed one goes to its hook a bufferful at a time.
