@@ -265,11 +265,10 @@ COSTA_SDO_SERVE_PART void SdoServer::initiate(const uint8_t* request, uint8_t cc
       return;
     }
   }  // without block transfers, their requests are unknown command specifiers (below)
-  if (ccs == kCcsDownloadSegment || ccs == kCcsUploadSegment) {
-    sendAbort(0, 0, AbortCode::kCommandSpecifier);  // no transfer to continue
-  } else {
-    sendAbort(loadU16(request + 1), request[3], AbortCode::kCommandSpecifier);
-  }
+  const bool segment = ccs == kCcsDownloadSegment || ccs == kCcsUploadSegment;
+  index_ = segment ? uint16_t{0} : loadU16(request + 1);  // a segment has no transfer to continue
+  subIndex_ = segment ? uint8_t{0} : request[3];
+  refuse(AbortCode::kCommandSpecifier);
 }
 
 COSTA_SDO_SERVE_PART void SdoServer::downloadSegment(const uint8_t* request) noexcept {
