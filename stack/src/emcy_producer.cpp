@@ -173,13 +173,14 @@ void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) n
     return;
   }
   const auto inhibit = dictionary_.readUnsigned32(kInhibitIndex, 0, 0) * kHundredMicroseconds;
-  while (pendingCount_ != 0U && nextAllowed_ == kNever) {
+  // Every queued frame without an inhibit time; one frame, and the inhibit time, with one.
+  do {
     tx.send(cob & 0x7FFU, pending_[pendingHead_].data, sizeof(pending_->data));
     pendingHead_ = pendingHead_ + 1U == pendingCapacity_ ? 0U : pendingHead_ + 1U;
     --pendingCount_;
-    if (inhibit != 0U) {
-      nextAllowed_ = at(now, inhibit);
-    }
+  } while (inhibit == 0U && pendingCount_ != 0U);
+  if (inhibit != 0U) {
+    nextAllowed_ = at(now, inhibit);
   }
 }
 
