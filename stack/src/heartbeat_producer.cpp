@@ -1,7 +1,6 @@
 #include "costa/heartbeat_producer.hpp"
 
 #include "costa/cob_ids.hpp"
-#include "costa/od/little_endian.hpp"
 
 namespace costa {
 
@@ -39,8 +38,7 @@ AbortCode HeartbeatProducer::write(od::ObjectDictionary& dictionary, const od::E
                                    const uint8_t* data, size_t length) noexcept {
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
-    restartWith(clock_.now,
-                static_cast<uint32_t>(loadLittleEndian(data, length)));  // the value just written
+    restart(clock_.now);  // with the value just written
   }
   return written;
 }
