@@ -73,8 +73,9 @@ bool SyncService::process(Microseconds now, bool allowed, SyncEvent* event) noex
 
 AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRef& ref,
                              const uint8_t* data, size_t length) noexcept {
-  const uint16_t index = ref.index();
-  if (index == kCobIdIndex && length == 4U) {
+  // The index as its distance from 0x1005: compared with short constants.
+  const unsigned index = ref.index() - kCobIdIndex;
+  if (index == 0U && length == 4U) {
     // SYNC has no valid bit: a restricted CAN-ID is refused even to consume (0x601 is SDO); a
     // producer stops producing before it changes the CAN-ID.
     const auto value = static_cast<uint32_t>(loadLittleEndian(data, length));
@@ -83,7 +84,7 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
       return AbortCode::kInvalidValue;
     }
   }
-  if (index == kOverflowIndex && length == 1U) {
+  if (index == kOverflowIndex - kCobIdIndex && length == 1U) {
     if (data[0] == 1U || data[0] > 240U) {
       return AbortCode::kInvalidValue;
     }
@@ -96,7 +97,7 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
   if (written != AbortCode::kNone) {
     return written;
   }
-  if (index == kWindowIndex) {
+  if (index == kWindowIndex - kCobIdIndex) {
     readParameters();  // the window alone: the cycle and its counter go on
     return written;
   }
