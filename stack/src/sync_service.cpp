@@ -92,7 +92,9 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
       return AbortCode::kCannotStoreState;  // CiA 301: only while the cycle period is 0
     }
   }
-  const bool wasProducing = producing();
+  // A running cycle keeps its counter; one that starts, starts at 1. (The counter of a node
+  // that does not produce is never sent: production starts with configure(), which sets 1.)
+  const uint8_t counter = producing() ? counter_ : uint8_t{1};
   const AbortCode written = dictionary.write(ref, data, length);
   if (written != AbortCode::kNone) {
     return written;
@@ -101,11 +103,8 @@ AbortCode SyncService::write(od::ObjectDictionary& dictionary, const od::EntryRe
     readParameters();  // the window alone: the cycle and its counter go on
     return written;
   }
-  const uint8_t counter = counter_;
   configure(clock_.now);  // the period from the write
-  if (wasProducing && producing()) {
-    counter_ = counter;  // a running cycle keeps its counter
-  }
+  counter_ = counter;
   return written;
 }
 
