@@ -40,13 +40,13 @@ void SyncService::clearLengthError() noexcept {
 
 bool SyncService::onFrame(const CanFrame& frame, Microseconds now, SyncEvent* event) noexcept {
   const uint8_t expected = overflow_ >= 2U ? 1U : 0U;
+  event->counter = expected != 0U ? frame.data[0] : 0U;  // (not used when the length is wrong)
   if (frame.dlc != expected) {
     lengthError_ = true;
     emcy_.raise(kEmcyUnexpectedLength, 0, kErrorCommunication);
     return false;
   }
   clearLengthError();
-  event->counter = expected != 0U ? frame.data[0] : 0U;
   return report(now, event);
 }
 

@@ -47,7 +47,7 @@ class SyncService : public ObjectHook {
     return !frame.rtr && !frame.extended && frame.id == canId_;
   }
   /// A received SYNC. A length that does not match 0x1019 (DLC 0 without a counter, 1 with)
-  /// raises EMCY 0x8240 and the SYNC is ignored; returns false then.
+  /// raises EMCY 0x8240 and the SYNC is ignored; returns false then (`event` is not valid).
   [[nodiscard]] bool onFrame(const CanFrame& frame, Microseconds now, SyncEvent* event) noexcept;
 
   /// Producer: sends the SYNC when due. Returns true (and fills `event`) when it sent one.
