@@ -35,22 +35,15 @@ void EmcyProducer::onResetCommunication() noexcept {
   publishRegister();
 }
 
-uint8_t EmcyProducer::errorRegister() const noexcept {
-  if (count_ == 0U || !profile_.reportErrorRegister) {
-    return 0;
-  }
-  uint8_t value = kErrorGeneric;
-  for (size_t i = 0; i < count_; ++i) {
-    value = static_cast<uint8_t>(value | conditions_[i].registerBits);
-  }
-  return value;
-}
-
 uint8_t EmcyProducer::frameRegister(uint8_t registerBits) const noexcept {
   if (!profile_.reportErrorRegister) {
     return 0;
   }
-  return static_cast<uint8_t>(errorRegister() | kErrorGeneric | registerBits);
+  auto value = static_cast<uint8_t>(kErrorGeneric | registerBits);
+  for (size_t i = 0; i < count_; ++i) {
+    value = static_cast<uint8_t>(value | conditions_[i].registerBits);
+  }
+  return value;
 }
 
 size_t EmcyProducer::position(uint16_t code, uint8_t source) const noexcept {

@@ -90,7 +90,9 @@ class EmcyProducer : public ObjectHook {
     return position(code, source) != count_;
   }
   size_t activeCount() const noexcept { return count_; }
-  uint8_t errorRegister() const noexcept;
+  uint8_t errorRegister() const noexcept {
+    return count_ == 0U ? uint8_t{0} : frameRegister(0);  // 0 without an active condition
+  }
   /// EMCY frames that could not be queued (queue full), since construction.
   uint32_t lost() const noexcept { return lost_; }
   /// Conditions raised while the condition table was full (their EMCY went out, but clearing
@@ -114,7 +116,8 @@ class EmcyProducer : public ObjectHook {
   /// Where condition (`code`, `source`) is in the table; count_ when it is not active.
   size_t position(uint16_t code, uint8_t source) const noexcept;
   void enqueue(uint16_t code, uint8_t registerValue, const uint8_t* manufacturer) noexcept;
-  /// The register byte of an EMCY raised with `registerBits`.
+  /// The register byte of an EMCY raised with `registerBits`: the generic bit, `registerBits` and
+  /// those of the active conditions (0 when the profile reports no register).
   uint8_t frameRegister(uint8_t registerBits) const noexcept;
   void record(uint16_t code, const uint8_t* manufacturer) noexcept;
   void publishRegister() noexcept;
