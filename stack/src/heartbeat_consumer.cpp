@@ -15,7 +15,8 @@ void HeartbeatConsumer::configure(bool reset) noexcept {
   if (object == nullptr) {
     return;
   }
-  for (unsigned i = 0; i + 1U < dictionary_.entryCount(*object) && count_ < capacity_; ++i) {
+  const unsigned entries = dictionary_.entryCount(*object);
+  for (unsigned i = 0; i + 1U < entries && count_ < capacity_; ++i) {
     const auto value = dictionary_.readUnsigned32(kIndex, static_cast<uint8_t>(i + 1U), 0);
     const auto nodeId = static_cast<uint8_t>(value >> 16U);
     const Microseconds time = millisecondsToMicroseconds(value & 0xFFFFU);
