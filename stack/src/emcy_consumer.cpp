@@ -15,10 +15,7 @@ constexpr uint8_t kLength = 8;
 }  // namespace
 
 void EmcyConsumer::addRoutes(const od::ObjectDictionary& dictionary, FrameRouter& router) noexcept {
-  const od::Object* object = dictionary.findObject(kIndex);
-  if (object == nullptr) {
-    return;
-  }
+  // Without the object the count is 0: no route.
   const auto count = static_cast<uint8_t>(dictionary.readUnsigned32(kIndex, 0, 0));
   for (uint8_t sub = 1; sub != 0U && sub <= count; ++sub) {
     const auto value = dictionary.readUnsigned32(kIndex, sub, kNotValid);
