@@ -153,10 +153,13 @@ uint32_t EmcyProducer::cobId() const noexcept {
 }
 
 void EmcyProducer::process(Microseconds now, NmtState state, TransmitPath& tx) noexcept {
-  if (reached(now, nextAllowed_)) {
+  if (nextAllowed_ != kNever) {
+    if (!reached(now, nextAllowed_)) {
+      return;  // within the inhibit time
+    }
     nextAllowed_ = kNever;  // the inhibit time is over
   }
-  if (pendingCount_ == 0U || nextAllowed_ != kNever ||
+  if (pendingCount_ == 0U ||
       (state != NmtState::kPreOperational && state != NmtState::kOperational)) {
     return;  // nothing to send now: no lookup of the COB-ID and the inhibit time
   }
