@@ -1,6 +1,7 @@
 #include "costa/heartbeat_producer.hpp"
 
 #include "costa/cob_ids.hpp"
+#include "costa/od/little_endian.hpp"
 
 namespace costa {
 
@@ -38,7 +39,11 @@ AbortCode HeartbeatProducer::write(od::ObjectDictionary& dictionary, const od::E
                                    const uint8_t* data, size_t length) noexcept {
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
-    restart(clock_.now);  // with the value just written
+    if constexpr (kExpandFastPaths) {
+      restartWith(clock_.now, static_cast<uint32_t>(loadLittleEndian(data, length)));
+    } else {
+      restart(clock_.now);  // reads the value just written: smaller than decoding the bytes
+    }
   }
   return written;
 }
