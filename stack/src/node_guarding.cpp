@@ -19,7 +19,9 @@ uint64_t NodeGuarding::lifeTime() const noexcept {
   // 64-bit multiplication, which small cores call a library routine for).
   const uint32_t milliseconds = dictionary_.readUnsigned32(kGuardTimeIndex, 0, 0) *
                                 dictionary_.readUnsigned32(kLifeTimeFactorIndex, 0, 0);
-  return (uint64_t{(milliseconds >> 16U) * 1000U} << 16U) + (milliseconds & 0xFFFFU) * 1000U;
+  const uint32_t high = (milliseconds >> 16U) * 1000U;  // µs of the milliseconds' high half
+  const uint32_t low = (milliseconds & 0xFFFFU) * 1000U;
+  return (uint64_t{high} << 16U) + low;
 }
 
 void NodeGuarding::restartLife(Microseconds now) noexcept {
