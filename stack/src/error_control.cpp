@@ -5,11 +5,28 @@
 
 namespace costa {
 
+// The services error control acts on, which are the state machine's (NmtStateMachine::Services).
+od::ObjectDictionary& ErrorControl::dictionary() const noexcept {
+  return nmt_.services().dictionary;
+}
+TransmitPath& ErrorControl::tx() const noexcept {
+  return nmt_.services().tx;
+}
+EmcyProducer& ErrorControl::emcy() const noexcept {
+  return nmt_.services().emcy;
+}
+NodeClock& ErrorControl::clock() const noexcept {
+  return nmt_.services().clock;
+}
+const NodeListeners& ErrorControl::listeners() const noexcept {
+  return nmt_.services().listeners;
+}
+
 void ErrorControl::reset(uint8_t nodeId) noexcept {
   // Monitoring starts over: the errors it had found are gone with it (EMCY 0x8130 cleared).
   if (profile_.emcyForErrors) {
     if (guarding_.expired()) {
-      emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
+      emcy().clear(kEmcyLifeGuardOrHeartbeat, 0);
     }
     for (uint8_t entry = 1;; ++entry) {
       const HeartbeatMonitor* monitor = consumer_.monitor(entry);
@@ -17,7 +34,7 @@ void ErrorControl::reset(uint8_t nodeId) noexcept {
         break;  // past the last entry of 0x1016
       }
       if (monitor->timedOut || monitor->withdrawnFrom != 0U) {
-        emcy_.clear(kEmcyLifeGuardOrHeartbeat, entry);
+        emcy().clear(kEmcyLifeGuardOrHeartbeat, entry);
       }
     }
   }
@@ -35,13 +52,13 @@ bool ErrorControl::onFrame(const CanFrame& frame, uint8_t nodeId) noexcept {
     }
     // CiA 301 7.2.8.3.2: with a heartbeat producer time, the heartbeat protocol is used, not
     // node guarding: a request is not answered, and the life guarding it would feed stops.
-    if (dictionary_.readUnsigned32(kHeartbeatProducerIndex, 0, 0) != 0U) {
+    if (dictionary().readUnsigned32(kHeartbeatProducerIndex, 0, 0) != 0U) {
       guarding_.ignoreRequest();
-    } else if (guarding_.onRequest(nmt_.state(), clock_.now) == NodeGuarding::Event::kResumed) {
+    } else if (guarding_.onRequest(nmt_.state(), clock().now) == NodeGuarding::Event::kResumed) {
       if (profile_.emcyForErrors) {
-        emcy_.clear(kEmcyLifeGuardOrHeartbeat, 0);
+        emcy().clear(kEmcyLifeGuardOrHeartbeat, 0);
       }
-      listeners_.notify([](NodeEvents& listener) { listener.onLifeGuardingResumed(); });
+      listeners().notify([](NodeEvents& listener) { listener.onLifeGuardingResumed(); });
     }
     return true;
   }
@@ -50,8 +67,8 @@ bool ErrorControl::onFrame(const CanFrame& frame, uint8_t nodeId) noexcept {
   }
   if (frame.dlc == 1U && frame.id != cob::kErrorControlBase + nodeId) {
     const auto from = static_cast<uint8_t>(frame.id - cob::kErrorControlBase);
-    onHeartbeatEvent(consumer_.onHeartbeat(from, frame.data[0], clock_.now));
-    clock_.schedule(consumer_.nextDeadline());
+    onHeartbeatEvent(consumer_.onHeartbeat(from, frame.data[0], clock().now));
+    clock().schedule(consumer_.nextDeadline());
   }
   return true;
 }
@@ -59,9 +76,9 @@ bool ErrorControl::onFrame(const CanFrame& frame, uint8_t nodeId) noexcept {
 void ErrorControl::process(Microseconds now) noexcept {
   if (guarding_.process(now) == NodeGuarding::Event::kLifeTimeExpired) {
     if (profile_.emcyForErrors) {
-      emcy_.raise(kEmcyLifeGuardOrHeartbeat, 0, kErrorCommunication);
+      emcy().raise(kEmcyLifeGuardOrHeartbeat, 0, kErrorCommunication);
     }
-    listeners_.notify([](NodeEvents& listener) { listener.onLifeGuardingExpired(); });
+    listeners().notify([](NodeEvents& listener) { listener.onLifeGuardingExpired(); });
     onCommunicationError();
   }
   for (;;) {
@@ -77,19 +94,19 @@ void ErrorControl::onHeartbeatEvent(const HeartbeatConsumer::Event& event) noexc
   if (event.kind == HeartbeatConsumer::EventKind::kTimeout) {
     const uint8_t producer[5] = {event.nodeId, 0, 0, 0, 0};
     if (profile_.emcyForErrors) {
-      emcy_.raise(kEmcyLifeGuardOrHeartbeat, event.entry, kErrorCommunication, producer);
+      emcy().raise(kEmcyLifeGuardOrHeartbeat, event.entry, kErrorCommunication, producer);
     }
-    listeners_.notify(
+    listeners().notify(
         [&event](NodeEvents& listener) { listener.onHeartbeatTimeout(event.nodeId); });
     onCommunicationError();
   } else if (event.kind != HeartbeatConsumer::EventKind::kNone) {
     // kResumed (the heartbeat is back) or kWithdrawn (the entry's new value starts monitoring
     // over, as reset communication does, reset()): either ends the error the entry had found.
     if (profile_.emcyForErrors) {
-      emcy_.clear(kEmcyLifeGuardOrHeartbeat, event.entry);
+      emcy().clear(kEmcyLifeGuardOrHeartbeat, event.entry);
     }
     const bool resumed = event.kind == HeartbeatConsumer::EventKind::kResumed;
-    listeners_.notify([&event, resumed](NodeEvents& listener) {
+    listeners().notify([&event, resumed](NodeEvents& listener) {
       if (resumed) {
         listener.onHeartbeatResumed(event.nodeId);
       } else {
@@ -101,11 +118,11 @@ void ErrorControl::onHeartbeatEvent(const HeartbeatConsumer::Event& event) noexc
 
 void ErrorControl::onCommunicationError() noexcept {
   applyErrorBehaviour(static_cast<uint8_t>(
-      dictionary_.readUnsigned32(kErrorBehaviourIndex, 1, profile_.errorBehaviourWithoutObject)));
+      dictionary().readUnsigned32(kErrorBehaviourIndex, 1, profile_.errorBehaviourWithoutObject)));
 }
 
 void ErrorControl::applyErrorBehaviour(uint8_t behaviour) noexcept {
-  emcy_.process(clock_.now, nmt_.state(), tx_);
+  emcy().process(clock().now, nmt_.state(), tx());
   const NmtState state = nmt_.state();
   if (behaviour == kEnterPreOperational && state == NmtState::kOperational) {
     nmt_.enter(NmtState::kPreOperational);
@@ -118,22 +135,22 @@ void ErrorControl::onControllerEvent(CanControllerEvent event) noexcept {
   switch (event) {
     case CanControllerEvent::kRxOverrun:
       ++rxOverruns_;
-      emcy_.signal(kEmcyRxOverrun, kErrorCommunication);
+      emcy().signal(kEmcyRxOverrun, kErrorCommunication);
       break;
     case CanControllerEvent::kErrorPassive:
       errorPassive_ = true;
-      emcy_.raise(kEmcyErrorPassive, 0, kErrorCommunication);
+      emcy().raise(kEmcyErrorPassive, 0, kErrorCommunication);
       break;
     case CanControllerEvent::kErrorActive:
       errorPassive_ = false;
-      emcy_.clear(kEmcyErrorPassive, 0);
+      emcy().clear(kEmcyErrorPassive, 0);
       break;
     case CanControllerEvent::kBusOff:
       if (!busOff_) {
         busOff_ = true;
         ++busOffs_;
-        tx_.setGate(TransmitPath::kBusOff, true);
-        listeners_.notify([](NodeEvents& listener) { listener.onBusOff(); });
+        tx().setGate(TransmitPath::kBusOff, true);
+        listeners().notify([](NodeEvents& listener) { listener.onBusOff(); });
         onCommunicationError();
       }
       break;
@@ -141,10 +158,10 @@ void ErrorControl::onControllerEvent(CanControllerEvent event) noexcept {
       if (busOff_) {
         busOff_ = false;
         errorPassive_ = false;
-        tx_.setGate(TransmitPath::kBusOff, false);
-        emcy_.clear(kEmcyErrorPassive, 0);
-        emcy_.signal(kEmcyBusOffRecovered, kErrorCommunication);
-        listeners_.notify([](NodeEvents& listener) { listener.onBusOffRecovered(); });
+        tx().setGate(TransmitPath::kBusOff, false);
+        emcy().clear(kEmcyErrorPassive, 0);
+        emcy().signal(kEmcyBusOffRecovered, kErrorCommunication);
+        listeners().notify([](NodeEvents& listener) { listener.onBusOffRecovered(); });
       }
       break;
   }

@@ -45,16 +45,13 @@ class ErrorControl {
     kEnterStopped = 2,
   };
 
+  /// Over the node's state machine `nmt`, through which it reaches the other services it acts
+  /// on (EMCY, listeners, ...); `dictionary`, `tx` and `clock` go to node guarding and the
+  /// heartbeat consumer.
   ErrorControl(od::ObjectDictionary& dictionary, const ErrorControlProfile& profile,
-               TransmitPath& tx, EmcyProducer& emcy, NodeClock& clock,
-               const NodeListeners& listeners, NmtStateMachine& nmt, HeartbeatMonitor* monitors,
+               TransmitPath& tx, NodeClock& clock, NmtStateMachine& nmt, HeartbeatMonitor* monitors,
                size_t monitorCapacity) noexcept
-      : dictionary_(dictionary),
-        profile_(profile),
-        tx_(tx),
-        emcy_(emcy),
-        clock_(clock),
-        listeners_(listeners),
+      : profile_(profile),
         nmt_(nmt),
         guarding_(dictionary, tx, clock),
         consumer_(dictionary, clock, monitors, monitorCapacity) {}
@@ -101,12 +98,14 @@ class ErrorControl {
  private:
   void onHeartbeatEvent(const HeartbeatConsumer::Event& event) noexcept;
 
-  od::ObjectDictionary& dictionary_;
+  // The services it acts on, through nmt_ (its references are the node's, kept once).
+  od::ObjectDictionary& dictionary() const noexcept;
+  TransmitPath& tx() const noexcept;
+  EmcyProducer& emcy() const noexcept;
+  NodeClock& clock() const noexcept;
+  const NodeListeners& listeners() const noexcept;
+
   const ErrorControlProfile& profile_;
-  TransmitPath& tx_;
-  EmcyProducer& emcy_;
-  NodeClock& clock_;
-  const NodeListeners& listeners_;
   NmtStateMachine& nmt_;
   NodeGuardingService guarding_;
   HeartbeatConsumerService consumer_;
