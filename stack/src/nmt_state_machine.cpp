@@ -98,7 +98,8 @@ void NmtStateMachine::resetCommunication() noexcept {
 bool NmtStateMachine::onCommand(const CanFrame& frame) noexcept {
   const NmtSlave::Decision decision = NmtSlave::decide(frame, nodeId_, state_);
   switch (decision.action) {
-    case NmtSlave::Action::kEnterState: enter(decision.state); break;
+    // (decide() asks for no state change while initialising, nor for initialising itself)
+    case NmtSlave::Action::kEnterState: setState(decision.state); break;
     case NmtSlave::Action::kResetNode: resetNode(); break;
     case NmtSlave::Action::kResetCommunication: resetCommunication(); break;
     case NmtSlave::Action::kNone: break;
@@ -117,7 +118,7 @@ void NmtStateMachine::process() noexcept {
   if (startPending_) {
     startPending_ = false;
     if (state_ == NmtState::kPreOperational) {
-      enter(NmtState::kOperational);  // automatic start after the boot-up
+      setState(NmtState::kOperational);  // automatic start after the boot-up
     }
   }
 }
