@@ -6,10 +6,8 @@ void FrameRouter::clear() noexcept {
   count_ = 0;
   shared_ = false;
   fastId_ = kNoFastId;
-  if constexpr (kIndexed) {
-    for (uint8_t& first : first_) {
-      first = 0;
-    }
+  for (uint8_t& first : first_) {
+    first = 0;
   }
   stale_ = false;
 }
@@ -27,11 +25,9 @@ bool FrameRouter::add(uint16_t id, Route route, uint8_t channel) noexcept {
   shared_ = shared_ || (at > 0U && slots_[at - 1U].id == id);
   slots_[at] = RouteEntry{id, route, channel};
   ++count_;
-  if constexpr (kIndexed) {
-    // Every function code after the new route's starts one route later.
-    for (size_t code = (id >> 7U) + 1U; code <= kFunctionCodes; ++code) {
-      ++first_[code];
-    }
+  // Every function code after the new route's starts one route later.
+  for (size_t code = (id >> 7U) + 1U; code <= kFunctionCodes; ++code) {
+    ++first_[code];
   }
   return true;
 }

@@ -2,10 +2,9 @@
 // node's CAN-IDs change (reset communication, a new PDO or SYNC COB-ID), so that a frame reaches
 // its service through one lookup instead of a chain of tests.
 //
-// The routes are sorted by CAN-ID; built for speed, they are also indexed by function code (the
-// CAN-ID's top four bits, as CiA 301's pre-defined connection set assigns them), so a lookup
-// looks at the few routes of one function code; built for size, it looks at them all (a node has
-// a dozen or two). The error control CAN-IDs (0x701..0x77F: heartbeats of other nodes, node
+// The routes are sorted by CAN-ID and indexed by function code (the CAN-ID's top four bits, as
+// CiA 301's pre-defined connection set assigns them), so a lookup looks at the few routes of
+// one function code. The error control CAN-IDs (0x701..0x77F: heartbeats of other nodes, node
 // guarding requests) are a range and are not in the table; the node tests them when the lookup
 // finds no route.
 //
@@ -17,7 +16,6 @@
 #include <stdint.h>
 
 #include "costa/hot_path.hpp"
-#include "costa/od/little_endian.hpp"
 
 namespace costa {
 
@@ -55,12 +53,10 @@ class FrameRouter {
   /// every service and PDO of the node, so this does not happen for a node's own table).
   bool add(uint16_t id, Route route, uint8_t channel = 0) noexcept;
 
-  /// The first route of `id` (<= kLargestId), or null. O(routes with the same function code);
-  /// built for size, O(routes).
+  /// The first route of `id` (<= kLargestId), or null. O(routes with the same function code).
   const RouteEntry* find(uint32_t id) const noexcept {
     const size_t code = id >> 7U;
-    const size_t end = kIndexed ? first_[code + 1U] : count_;
-    for (size_t i = kIndexed ? first_[code] : 0U; i < end; ++i) {
+    for (size_t i = first_[code]; i < first_[code + 1U]; ++i) {
       if (slots_[i].id == id) {
         return &slots_[i];
       }
@@ -110,8 +106,6 @@ class FrameRouter {
 
  private:
   static constexpr size_t kFunctionCodes = 16;
-  /// Whether first_ indexes the table (built for speed).
-  static constexpr bool kIndexed = kExpandFastPaths;
 
   RouteEntry* slots_;
   size_t capacity_;
@@ -119,9 +113,8 @@ class FrameRouter {
   // (the flags before the index, within reach of Thumb-1's short offsets: every frame reads them)
   bool stale_ = true;
   bool shared_ = false;  ///< some CAN-ID has more than one route
-  /// first_[c]: the index of the first route of function code c; first_[16] = count_ (built for
-  /// speed; built for size, one unused byte).
-  uint8_t first_[kIndexed ? kFunctionCodes + 1U : 1U] = {};
+  /// first_[c]: the index of the first route of function code c; first_[16] = count_.
+  uint8_t first_[kFunctionCodes + 1U] = {};
   uint32_t changes_ = 0;
   uint32_t fastId_ = kNoFastId;
 };
