@@ -39,11 +39,8 @@ AbortCode HeartbeatProducer::write(od::ObjectDictionary& dictionary, const od::E
                                    const uint8_t* data, size_t length) noexcept {
   const AbortCode written = dictionary.write(ref, data, length);
   if (written == AbortCode::kNone) {
-    if constexpr (kExpandFastPaths) {
-      restartWith(clock_.now, static_cast<uint32_t>(loadLittleEndian(data, length)));
-    } else {
-      restart(clock_.now);  // reads the value just written: smaller than decoding the bytes
-    }
+    restartWith(clock_.now,
+                static_cast<uint32_t>(loadLittleEndian(data, length)));  // the value just written
   }
   return written;
 }
