@@ -118,16 +118,29 @@ void SdoServer::uploadSegment(const uint8_t* request) noexcept {
   const size_t remaining = reader_.size() - done_;
   const bool last = remaining <= kSegmentBytes;
   const size_t count = last ? remaining : kSegmentBytes;
-  // Bytes 1..7 of the response: the segment's, then zeros.
-  alignas(4) uint8_t bytes[8] = {};
-  const AbortCode read = reader_.read(done_, bytes + 1, count);
-  if (read != AbortCode::kNone) {
-    abortTransfer(read);
-    return;
+  if constexpr (kExpandFastPaths) {  // the segment read straight into the response
+    CanFrame response;
+    channel_.address(response);
+    response.data[0] = segmentHeader(toggleBit_, count, last);
+    const AbortCode read = reader_.read(done_, response.data + 1, count);
+    if (read != AbortCode::kNone) {
+      abortTransfer(read);
+      return;
+    }
+    done_ += count;
+    channel_.send(response);
+  } else {  // built for size: through the channel's one frame builder
+    // Bytes 1..7 of the response: the segment's, then zeros.
+    alignas(4) uint8_t bytes[8] = {};
+    const AbortCode read = reader_.read(done_, bytes + 1, count);
+    if (read != AbortCode::kNone) {
+      abortTransfer(read);
+      return;
+    }
+    done_ += count;
+    channel_.send(segmentHeader(toggleBit_, count, last), loadU16(bytes + 1), bytes[3],
+                  loadU32(bytes + 4));
   }
-  done_ += count;
-  channel_.send(segmentHeader(toggleBit_, count, last), loadU16(bytes + 1), bytes[3],
-                loadU32(bytes + 4));
   afterSegment(last);
 }
 
