@@ -79,7 +79,10 @@ bool SdoServer::valid() const noexcept {
 }
 
 Microseconds SdoServer::nextDeadline() const noexcept {
-  // Idle, deadline_ is kNever (valid()).
+  // Idle, deadline_ is kNever (valid()); where speed counts, idle returns at once.
+  if (kExpandFastPaths && state_ == State::kIdle) {
+    return kNever;
+  }
   if constexpr (features::kSdoBlockTransfer) {
     if (blockSegmentsReady()) {
       return lastCall_;
@@ -90,7 +93,8 @@ Microseconds SdoServer::nextDeadline() const noexcept {
 
 void SdoServer::process(Microseconds now) noexcept {
   lastCall_ = now;
-  if (reached(now, deadline_)) {  // never while idle: deadline_ is kNever (valid())
+  // Never while idle: deadline_ is kNever (valid()); where speed counts, idle is tested first.
+  if ((!kExpandFastPaths || state_ != State::kIdle) && reached(now, deadline_)) {
     abortTransfer(AbortCode::kTimeout);
     return;
   }
