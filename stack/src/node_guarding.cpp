@@ -14,14 +14,9 @@ void NodeGuarding::reset(uint8_t nodeId, uint8_t toggleStart) noexcept {
 }
 
 uint64_t NodeGuarding::lifeTime() const noexcept {
-  // Up to 65,535 ms x 255: more than LongTimer's steps, as CiA 301 allows. The product of the
-  // UNSIGNED16 and the UNSIGNED8 fits 32 bits; its µs are made of two 32-bit products (no
-  // 64-bit multiplication, which small cores call a library routine for).
-  const uint32_t milliseconds = dictionary_.readUnsigned32(kGuardTimeIndex, 0, 0) *
-                                dictionary_.readUnsigned32(kLifeTimeFactorIndex, 0, 0);
-  const uint32_t high = (milliseconds >> 16U) * 1000U;  // µs of the milliseconds' high half
-  const uint32_t low = (milliseconds & 0xFFFFU) * 1000U;
-  return (uint64_t{high} << 16U) + low;
+  // Up to 65,535 ms x 255: more than LongTimer's steps, as CiA 301 allows.
+  return uint64_t{1000} * dictionary_.readUnsigned32(kGuardTimeIndex, 0, 0) *
+         dictionary_.readUnsigned32(kLifeTimeFactorIndex, 0, 0);
 }
 
 void NodeGuarding::restartLife(Microseconds now) noexcept {
