@@ -117,6 +117,28 @@ TEST_F(Sync, TheProducersCounterStartsOverAfterStopped) {
   )");
 }
 
+// A write that stops production (period 0) and one that starts it again: the counter starts
+// over, as it does after any stop.
+TEST_F(Sync, TheProducersCounterStartsOverAfterAWriteStoppedIt) {
+  EXPECT_TRANSCRIPT(kProducerCounting1To3Every10ms);
+  EXPECT_TRANSCRIPT(R"(
+    wait 10
+    tx 080 [1] 01
+    wait 10
+    tx 080 [1] 02
+    rx 601 [8] 23 06 10 00 00 00 00 00   # period 0: no production
+    tx 581 [8] 60 06 10 00 00 00 00 00
+    wait 30
+    silence
+    rx 601 [8] 23 06 10 00 10 27 00 00   # 10 ms again
+    tx 581 [8] 60 06 10 00 00 00 00 00
+    wait 10
+    tx 080 [1] 01                        # from 1 again, not 3
+    wait 10
+    tx 080 [1] 02
+  )");
+}
+
 TEST_F(Sync, TheProducersOwnSyncDrivesItsSynchronousPdos) {
   EXPECT_TRANSCRIPT(std::string(kTpdo1EverySync) + R"(
     rx 601 [8] 23 06 10 00 10 27 00 00

@@ -216,9 +216,10 @@ bool SdoServer::onRequest(const CanFrame& frame, Microseconds now) noexcept {
 void SdoServer::serve(const uint8_t* request, Microseconds now) noexcept {
   lastCall_ = now;
   const auto ccs = static_cast<uint8_t>(request[0] >> 5U);
-  // The frequent requests first: a new transfer, the next segment of an upload. Each is a call
-  // of its own, so that this dispatch needs no stack frame: a segment does not pay for what an
-  // initiate needs.
+  // The frequent requests first: a new transfer, the next segment of an upload. Built for
+  // speed, each is a call of its own, so that this dispatch needs no stack frame: a segment does
+  // not pay for what an initiate needs (built for size, the rarer handlers, the initiated
+  // download among them, are expanded here: COSTA_SDO_SERVE_PART).
   if (state_ == State::kIdle && ccs == kCcsInitiateUpload) {
     initiateUpload(request);
   } else if (state_ == State::kIdle && ccs == kCcsInitiateDownload) {

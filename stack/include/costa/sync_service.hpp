@@ -62,7 +62,7 @@ class SyncService : public ObjectHook {
   /// change while producing), 0x1019 (0 or 2..240, only while the period is 0). An accepted
   /// write takes effect at once: 0x1007 changes the window alone; one of 0x1005, 0x1006 or
   /// 0x1019 configures the service from the write (configure()), except that production that
-  /// goes on keeps its counter.
+  /// goes on keeps its counter (production the write stops starts from 1 when it resumes).
   AbortCode write(od::ObjectDictionary& dictionary, const od::EntryRef& ref, const uint8_t* data,
                   size_t length) noexcept override;
 
