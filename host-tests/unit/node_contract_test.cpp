@@ -252,8 +252,8 @@ class PatchedExample {
     const od::ObjectDictionary dictionary(gen::example::kDefinition, &values);
     const size_t offset = dictionary.find(mappingIndex, subIndex).offset();
     defaults_.assign(definition_.defaults, definition_.defaults + definition_.defaultCount);
-    // A mapping value (beyond 16 bits) is held as bytes: the patched record gets bytes of its
-    // own, after a copy of every record's.
+    // The patched record gets bytes of its own (the mapping value has bits 16..28, which only
+    // bytes hold), after a copy of every record's.
     size_t end = 0;
     for (const od::DefaultValue& value : defaults_) {
       if ((value.flags & od::kDefaultInBytes) != 0U) {
@@ -264,9 +264,12 @@ class PatchedExample {
     bool patched = false;
     for (od::DefaultValue& value : defaults_) {
       if (value.offset == offset) {
-        EXPECT_EQ(value.flags & od::kDefaultInBytes, od::kDefaultInBytes);
         EXPECT_EQ(value.size, 4U);
-        EXPECT_EQ(loadU32(definition_.defaultBytes + value.value), original);
+        if ((value.flags & od::kDefaultInBytes) != 0U) {
+          EXPECT_EQ(loadU32(definition_.defaultBytes + value.value), original);
+        } else {  // held as itself: bits 0..15 and 29..31
+          EXPECT_EQ(value.value + ((value.flags & od::kDefaultTopBits) << 24U), original);
+        }
         value.flags = od::kDefaultInBytes | od::kDefaultNumber;
         value.size = 4;
         value.value = static_cast<uint16_t>(bytes_.size());

@@ -143,9 +143,10 @@ def default_bytes(entry: Entry) -> bytes:
 
 def default_records(device: Device, layout: Layout) -> tuple:
     """The defaults of the RAM block as od::DefaultValue rows (every non-zero and every
-    `$NODEID` value), in the order of their offsets, and the bytes of those longer than 4 bytes:
+    `$NODEID` value), in the order of their offsets, and the bytes of the others:
     ([(offset expression, value, size, flags, comment)], bytes). A number of up to 4 bytes
-    whose value fits in 16 bits is held as itself, anything else as bytes."""
+    whose bits 16..28 are clear (a COB-ID with its flag bits, for one) is held as itself, its
+    bits 29..31 in the flags (kDefaultTopBits); anything else as bytes."""
     records, blob = [], bytearray()
     for entry in device.all_entries():
         if entry.in_rom or not entry.has_storage:
@@ -158,7 +159,7 @@ def default_records(device: Device, layout: Layout) -> tuple:
             (["kDefaultNodeId"] if entry.node_id_relative else [])
         offset, label = layout.offsets[(entry.index, entry.sub)], f"0x{entry.index:04X}:{entry.sub}"
         number = int.from_bytes(data, "little")
-        if numeric and len(data) <= 4 and number <= 0xFFFF:
+        if numeric and len(data) <= 4 and number & _DEFAULT_MIDDLE_BITS == 0:
             records.append((offset, number, len(data), flags, label))
             continue
         # Bytes: in pieces of at most 255 (DefaultValue::size), the pieces of zeros left out;
@@ -180,9 +181,12 @@ def _defaults_text(device: Device, layout: Layout) -> list:
     lines = ["/// The defaults of the RAM block (the rest is zero), by offset.",
              "constexpr costa::od::DefaultValue kDefaults[] = {"]
     for offset, value, size, flags, label in records:
-        flag_text = " | ".join(f"costa::od::{f}" for f in flags) if flags else "0"
         shown = (f"{size} bytes from kDefaultBytes[{value}]" if "kDefaultInBytes" in flags
                  else f"0x{value:X}")
+        if value > 0xFFFF and "kDefaultInBytes" not in flags:  # bits 29..31 in the flags
+            flags = flags + [f"defaultTopBits(0x{value & ~0xFFFF:X}U)"]
+            value &= 0xFFFF
+        flag_text = " | ".join(f"costa::od::{f}" for f in flags) if flags else "0"
         lines.append(f"{_INDENT * 2}{{0x{value:X}U, {offset}, {size}, {flag_text}}},"
                      f"  // {label} = {shown}")
     if not records:
@@ -227,6 +231,7 @@ def _limits(device: Device) -> tuple:
 
 _MERGEABLE_KINDS = ("bool", "signed", "unsigned", "real")
 _DEFAULT_PIECE = 255  # the most bytes one od::DefaultValue holds
+_DEFAULT_MIDDLE_BITS = 0x1FFF0000  # bits a number held as itself leaves clear (16..28)
 
 
 def rows_of(obj, row_of: dict) -> list:

@@ -34,7 +34,9 @@ void writeDefault(const Definition& definition, const DefaultValue& value, uint8
                   uint8_t nodeId) noexcept {
   const uint8_t addend = (value.flags & kDefaultNodeId) != 0U ? nodeId : 0U;
   if ((value.flags & kDefaultInBytes) == 0U) {
-    storeNative32(target, value.value + addend, value.size);  // the number itself
+    // The number itself: no carry of the 16-bit value's sum reaches the top bits.
+    const uint32_t top = static_cast<uint32_t>(value.flags & kDefaultTopBits) << (29U - 5U);
+    storeNative32(target, value.value + addend + top, value.size);
     return;
   }
   const uint8_t* stored = definition.defaultBytes + value.value;

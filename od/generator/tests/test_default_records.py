@@ -44,18 +44,19 @@ class DefaultRecordsTest(unittest.TestCase):
         self.assertIn("{0x2002, costa::od::ObjectCode::kVar, 1, 0, sizeof(Values)},", cpp)
 
     def test_equal_default_bytes_are_held_once(self):
-        # Numbers beyond 16 bits are bytes of kDefaultBytes; equal ones refer to the same bytes.
+        # Numbers with bits 16..28 set are bytes of kDefaultBytes; equal ones refer to the same
+        # bytes.
         result = run_text(eds("""
             [2000]
             ParameterName=First
             DataType=0x0007
             AccessType=rw
-            DefaultValue=0x80000000
+            DefaultValue=0x80010000
             [2001]
             ParameterName=Second
             DataType=0x0007
             AccessType=rw
-            DefaultValue=0x80000000
+            DefaultValue=0x80010000
             [2002]
             ParameterName=Small
             DataType=0x0007
@@ -68,7 +69,29 @@ class DefaultRecordsTest(unittest.TestCase):
             self.assertIn(f"{{0x0U, offsetof(Values, {name}), 4, costa::od::kDefaultInBytes | "
                           "costa::od::kDefaultNumber},", cpp)
         self.assertIn("{0xFFFFU, offsetof(Values, x2002_small), 4, costa::od::kDefaultNumber},", cpp)
-        self.assertIn("constexpr uint8_t kDefaultBytes[] = {\n    0x00, 0x00, 0x00, 0x80,\n};", cpp)
+        self.assertIn("constexpr uint8_t kDefaultBytes[] = {\n    0x00, 0x00, 0x01, 0x80,\n};", cpp)
+
+    def test_numbers_with_top_bits_are_held_as_themselves(self):
+        # A COB-ID's bits 29..31 above a 16-bit value: the value and kDefaultTopBits, no bytes.
+        result = run_text(eds("""
+            [2000]
+            ParameterName=Invalid
+            DataType=0x0007
+            AccessType=rw
+            DefaultValue=$NODEID+0xC0000180
+            [2001]
+            ParameterName=Short
+            DataType=0x0006
+            AccessType=rw
+            DefaultValue=0xFFFF
+            """))
+        self.assertEqual(result.status, 0)
+        cpp = result.files["test_od.cpp"]
+        self.assertIn("{0x180U, offsetof(Values, x2000_invalid), 4, costa::od::kDefaultNumber | "
+                      "costa::od::kDefaultNodeId | costa::od::defaultTopBits(0xC0000000U)},  "
+                      "// 0x2000:0 = 0xC0000180", cpp)
+        self.assertIn("{0xFFFFU, offsetof(Values, x2001_short), 2, costa::od::kDefaultNumber},", cpp)
+        self.assertIn("constexpr uint8_t kDefaultBytes[] = {\n    0,  // none", cpp)
 
 
 if __name__ == "__main__":

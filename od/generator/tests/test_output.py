@@ -166,28 +166,28 @@ class ExampleOutputTest(unittest.TestCase):
             with self.subTest(literal=literal):
                 self.assertIn(literal, self.cpp)
         # RAM defaults: the non-zero ones and the `$NODEID` ones, each with its size and flags;
-        # numbers of up to 4 bytes that fit in 16 bits as themselves, the rest (larger numbers,
-        # strings, octets) as bytes of kDefaultBytes.
+        # numbers of up to 4 bytes whose bits 16..28 are clear as themselves (bits 29..31 in
+        # the flags), the rest (larger numbers, strings, octets) as bytes of kDefaultBytes.
         for record in ("{0x80U, offsetof(Values, x1014_cob_id_emcy), 4, costa::od::kDefaultNumber"
                        " | costa::od::kDefaultNodeId},  // 0x1014:0 = 0x80",
                        "X2000Integers, int16), 2, costa::od::kDefaultNumber},  // 0x2000:2 = 0x8000",
-                       "{0x14U, offsetof(Values, x2000_integers) + offsetof(Values::"
-                       "X2000Integers, int32), 4, costa::od::kDefaultInBytes | "
-                       "costa::od::kDefaultNumber},  // 0x2000:3 = 4 bytes from kDefaultBytes[20]",
+                       "{0x0U, offsetof(Values, x2000_integers) + offsetof(Values::"
+                       "X2000Integers, int32), 4, costa::od::kDefaultNumber | "
+                       "costa::od::defaultTopBits(0x80000000U)},  // 0x2000:3 = 0x80000000",
                        "X2000Integers, int64), 8, costa::od::kDefaultInBytes | "
-                       "costa::od::kDefaultNumber},  // 0x2000:4 = 8 bytes from kDefaultBytes[24]",
-                       "{0x2CU, offsetof(Values, x2001_real32_value), 4, "
+                       "costa::od::kDefaultNumber},  // 0x2000:4 = 8 bytes from kDefaultBytes[12]",
+                       "{0x20U, offsetof(Values, x2001_real32_value), 4, "
                        "costa::od::kDefaultInBytes | costa::od::kDefaultNumber},",
-                       "{0x38U, offsetof(Values, x2003_serial_text), 21, costa::od::kDefaultInBytes},"
-                       "  // 0x2003:0 = 21 bytes from kDefaultBytes[56]",
+                       "{0x2CU, offsetof(Values, x2003_serial_text), 21, costa::od::kDefaultInBytes},"
+                       "  // 0x2003:0 = 21 bytes from kDefaultBytes[44]",
                        # a `$NODEID` default of 0 has a record: the node-id is added to it
                        "{0x0U, offsetof(Values, x200f_node_id_copy), 2, costa::od::kDefaultNumber"
                        " | costa::od::kDefaultNodeId},"):
             with self.subTest(record=record):
                 self.assertIn(record, self.cpp)
         self.assertNotIn("x1001_error_register), 0x", self.cpp)  # default 0: no record
-        self.assertIn("0x00, 0x00, 0x00, 0x80, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80,\n"
-                      "    0xFF, 0xFF", self.cpp)
+        self.assertIn("0x20, 0x00, 0x01, 0x20, 0x00, 0x00, 0x00, 0x00,\n"
+                      "    0x00, 0x00, 0x00, 0x80, 0xFF, 0xFF", self.cpp)
         self.assertIn('static_assert(costa::od::sortedByOffset(kDefaults), "defaults in the '
                       'order of their offsets");', self.cpp)
 

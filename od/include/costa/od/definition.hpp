@@ -63,10 +63,19 @@ enum DefaultFlag : uint8_t {
   kDefaultInBytes = 1U << 0,
   kDefaultNumber = 1U << 1,  ///< A number (in CPU byte order in RAM), not a string's bytes.
   kDefaultNodeId = 1U << 2,  ///< `$NODEID + value`: the node-id is added as it is restored.
+  /// Bits 29..31 of a number held as itself (not kDefaultInBytes), in bits 5..7 of the flags:
+  /// a COB-ID's flag bits (invalid, no RTR, 29-bit frame) above its 16-bit value.
+  kDefaultTopBits = 7U << 5,
 };
 
+/// The kDefaultTopBits of the flags of `number`, a number held as itself (bits 16..28 clear).
+constexpr uint8_t defaultTopBits(uint32_t number) noexcept {
+  return static_cast<uint8_t>((number >> 29U) << 5U);
+}
+
 /// A default of the RAM block: the `size` bytes at `offset`. A number of up to 4 bytes whose
-/// value fits in 16 bits is `value` itself; anything else (larger numbers, strings with a
+/// bits 16..28 are clear is `value` itself (its bits 0..15) plus kDefaultTopBits (its bits
+/// 29..31); anything else (larger numbers, strings with a
 /// VISIBLE_STRING's terminating zero, octet strings) is the little-endian bytes at
 /// Definition::defaultBytes + value (kDefaultInBytes), in pieces of at most 255 bytes. Every
 /// byte no DefaultValue covers defaults to zero; every `$NODEID` value has one (its value
