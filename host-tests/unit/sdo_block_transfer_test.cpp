@@ -89,6 +89,35 @@ TEST_F(BlockTransferTest, ServerBlockSizeFollowsWhatIsLeft) {
   EXPECT_EQ(down.blockSizes, (std::vector<int>{127, 16}));
 }
 
+// (bytes, block sizes the server asks for, the last acknowledgement's aside) at the edges of a
+// whole block: 126 segments, 127 begun and whole, a byte and a segment more, and two begun.
+class ServerBlockSizes : public BlockTransferTest,
+                         public ::testing::WithParamInterface<std::pair<size_t, std::vector<int>>> {
+};
+
+TEST_P(ServerBlockSizes, FollowWhatIsLeftAndUploadTheSameBytes) {
+  const auto& [size, blockSizes] = GetParam();
+  const std::vector<uint8_t> data = pattern(size);
+  const BlockTransferResult down = client_.download(kScratchPad, 0, data);
+  ASSERT_TRUE(down.ok()) << down.error;
+  EXPECT_EQ(down.blockSizes, blockSizes);
+  const BlockTransferResult up = client_.upload(kScratchPad, 0);
+  ASSERT_TRUE(up.ok()) << up.error;
+  EXPECT_EQ(up.data, data);  // the end frame's unused bytes cut the last segment
+}
+
+INSTANTIATE_TEST_SUITE_P(All, ServerBlockSizes,
+                         ::testing::Values(std::pair{size_t{882}, std::vector<int>{126}},
+                                           std::pair{size_t{883}, std::vector<int>{127}},
+                                           std::pair{size_t{889}, std::vector<int>{127}},
+                                           std::pair{size_t{890}, std::vector<int>{127, 1}},
+                                           std::pair{size_t{895}, std::vector<int>{127, 1}},
+                                           std::pair{size_t{896}, std::vector<int>{127, 1}},
+                                           std::pair{size_t{897}, std::vector<int>{127, 2}}),
+                         [](const auto& parameters) {
+                           return std::to_string(parameters.param.first) + "Bytes";
+                         });
+
 TEST_F(BlockTransferTest, LostDownloadSegmentIsRepeated) {
   const std::vector<uint8_t> data = pattern(10240);
   BlockTransferOptions options;

@@ -1,5 +1,7 @@
 #include "costa/parameter_store.hpp"
 
+#include "costa/shift_division.hpp"
+
 namespace costa {
 namespace {
 
@@ -17,7 +19,7 @@ bool slotBytes(uint32_t payload, uint32_t alignment, uint32_t* bytes) noexcept {
   if (__builtin_add_overflow(payload, uint32_t{kImageHeaderSize}, &value)) {
     return false;
   }
-  const uint32_t rest = value % alignment;
+  const uint32_t rest = divide(value, alignment).remainder;
   return !__builtin_add_overflow(value, rest == 0U ? 0U : alignment - rest, bytes);
 }
 
@@ -181,7 +183,7 @@ size_t ParameterStore::computeLayout(Region* regions, size_t* count) const noexc
   }
   if (end >= needed) {
     const uint32_t start = end - (needed - groupsEnd);
-    offset = start - start % alignment;  // not below groupsEnd
+    offset = start - divide(start, alignment).remainder;  // not below groupsEnd
   }
   for (size_t i = 0; i < recordCount_; ++i) {
     if (!place(recordRegion(records_[i].id), 0U, records_[i].maxLength)) {

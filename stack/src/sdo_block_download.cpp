@@ -2,6 +2,7 @@
 
 #include "costa/od/bytes.hpp"
 #include "costa/od/little_endian.hpp"
+#include "costa/sdo_block_segments.hpp"
 
 namespace costa {
 namespace {
@@ -122,12 +123,8 @@ void SdoBlockDownload::acknowledge(uint8_t sequence) noexcept {
 }
 
 uint8_t SdoBlockDownload::nextBlockSize() const noexcept {
-  const size_t room = writer_.room();
-  const size_t segments = room / kSegmentBytes + (room % kSegmentBytes != 0U ? 1U : 0U);
-  if (segments < 1U) {
-    return 1;
-  }
-  return segments > kMaxBlockSize ? kMaxBlockSize : static_cast<uint8_t>(segments);
+  const uint8_t segments = blockSegments(writer_.room());  // at most kMaxBlockSize
+  return segments < 1U ? uint8_t{1} : segments;
 }
 
 }  // namespace costa

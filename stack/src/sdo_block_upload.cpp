@@ -1,6 +1,7 @@
 #include "costa/sdo_block_upload.hpp"
 
 #include "costa/od/little_endian.hpp"
+#include "costa/sdo_block_segments.hpp"
 
 namespace costa {
 namespace {
@@ -72,10 +73,8 @@ AbortCode SdoBlockUpload::onRequest(const uint8_t* request) noexcept {
 
 AbortCode SdoBlockUpload::beginSubBlock() noexcept {
   const size_t remaining = size_ - blockStart_;
-  const size_t segments =
-      remaining == 0U ? 1U
-                      : remaining / kSegmentBytes + (remaining % kSegmentBytes != 0U ? 1U : 0U);
-  planned_ = segments < blockSize_ ? static_cast<uint8_t>(segments) : blockSize_;
+  const uint8_t segments = remaining == 0U ? uint8_t{1} : blockSegments(remaining);
+  planned_ = segments < blockSize_ ? segments : blockSize_;
   sent_ = 0;
   phase_ = Phase::kSubBlock;
   return pump();
@@ -128,8 +127,10 @@ AbortCode SdoBlockUpload::acknowledged(uint8_t sequence, uint8_t nextBlockSize) 
 }
 
 void SdoBlockUpload::sendEnd() noexcept {
-  const size_t inLast = size_ == 0U ? 0U : (size_ - 1U) % kSegmentBytes + 1U;
-  const auto unused = static_cast<uint8_t>(kSegmentBytes - inLast);
+  // blockStart_ is a multiple of 7 below size_ (or 0), and the last sub-block plans just the
+  // segments left: what they span beyond size_ is the last segment's unused bytes (all 7 of the
+  // one empty segment of a value of 0 bytes).
+  const auto unused = static_cast<uint8_t>(blockStart_ + planned_ * kSegmentBytes - size_);
   // The initiate response announced CRC support (sc = 1), so the end frame carries the valid
   // CRC whether the client asked for it or not: CiA 301 makes it 0 only when unused, and masters
   // that check it whenever sc is set (without having set cc) accept a valid one either way.

@@ -3,6 +3,7 @@
 #include "costa/cob_ids.hpp"
 #include "costa/frame_router.hpp"
 #include "costa/od/little_endian.hpp"
+#include "costa/shift_division.hpp"
 
 namespace costa {
 namespace {
@@ -11,20 +12,18 @@ namespace {
 constexpr uint32_t kRebasePeriod = 600000000;  // 10 min
 constexpr uint32_t kMillisecondMask = 0x0FFFFFFF;
 
-/// `time` `elapsed` milliseconds later. 32-bit arithmetic only (no 64-bit division on small
-/// cores): time.milliseconds is below a day, so it and the rest of `elapsed` add up to less
-/// than two days, which fits.
+/// `time` `elapsed` milliseconds later, `elapsed` below a day (at most 4,294,967: the µs clock's
+/// range in ms). time.milliseconds is below a day too, so the sum is below two days.
 TimeOfDay later(const TimeOfDay& time, uint32_t elapsed) noexcept {
   constexpr uint32_t kDay = TimeOfDay::kMillisecondsPerDay;
-  uint32_t days = time.days + elapsed / kDay;
-  uint32_t milliseconds = time.milliseconds + elapsed % kDay;
-  if (milliseconds >= kDay) {
-    milliseconds -= kDay;
-    ++days;
-  }
+  static_assert(UINT32_MAX / 1000U < kDay, "elapsed is below a day");
   TimeOfDay result;
-  result.milliseconds = milliseconds;
-  result.days = static_cast<uint16_t>(days);
+  result.milliseconds = time.milliseconds + elapsed;
+  result.days = time.days;
+  if (result.milliseconds >= kDay) {
+    result.milliseconds -= kDay;
+    ++result.days;
+  }
   return result;
 }
 
@@ -65,16 +64,16 @@ bool TimeService::setTimeOfDay(const TimeOfDay& time, Microseconds now) noexcept
 }
 
 void TimeService::advanceTo(Microseconds now) noexcept {
-  const uint32_t elapsed = (now - baseAt_) / 1000U;
-  baseAt_ += elapsed * 1000U;
-  base_ = later(base_, elapsed);
+  const Quotient elapsed = divide(now - baseAt_, 1000U);  // whole ms, and the µs left over
+  baseAt_ = now - elapsed.remainder;
+  base_ = later(base_, elapsed.quotient);
 }
 
 bool TimeService::timeOfDay(Microseconds now, TimeOfDay* out) const noexcept {
   if (rebaseAt_ == kNever) {
     return false;
   }
-  *out = later(base_, (now - baseAt_) / 1000U);
+  *out = later(base_, divide(now - baseAt_, 1000U).quotient);
   return true;
 }
 
