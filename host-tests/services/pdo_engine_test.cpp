@@ -231,7 +231,8 @@ TEST_F(PdoParameters, OnlyTheDummyEntriesTheDictionaryDeclaresMayBeMapped) {
 TEST_F(PdoParameters, TheNumberOfEntriesMustFitAndMapSomething) {
   invalidate(0x1400, 0x205);
   EXPECT_EQ(write(pdos_, 0x1600, 0, 0, 1), AbortCode::kNone);
-  EXPECT_EQ(write(pdos_, 0x1600, 0, 5, 1), AbortCode::kMappingTooLong);         // 4 entries exist
+  EXPECT_EQ(write(pdos_, 0x1600, 0, 5, 1), AbortCode::kMappingTooLong);     // 4 entries exist
+  EXPECT_EQ(write(pdos_, 0x1600, 0, 0xFF, 1), AbortCode::kMappingTooLong);  // the most a byte holds
   EXPECT_EQ(write(pdos_, 0x1600, 0, 3, 1), AbortCode::kParameterIncompatible);  // entry 3 is 0
   invalidate(0x1800, 0x185);
   EXPECT_EQ(write(pdos_, 0x1A00, 0, 0, 1), AbortCode::kNone);

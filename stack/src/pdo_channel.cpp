@@ -15,45 +15,60 @@ bool PdoChannel::readCommunication(const PdoContext& context) noexcept {
 
 namespace {
 
-// The mapping values of the PDO whose communication parameter is at `communicationIndex` (see
-// resolvePdoMapping); returns how many were written to `values`.
-size_t readMappingValues(const od::ObjectDictionary& dictionary, const StaticPdoMappings& fixed,
-                         uint16_t communicationIndex, uint32_t* values) noexcept {
-  const auto mappingIndex = static_cast<uint16_t>(communicationIndex + 0x200U);
-  if (dictionary.findObject(mappingIndex) != nullptr) {
-    auto count = static_cast<size_t>(dictionary.readUnsigned32(mappingIndex, 0, 0));
-    if (count > PdoMap::kMaxEntries) {
-      count = PdoMap::kMaxEntries;
+// The mapping values the mapping object at `mappingIndex` holds into `values`, `*count` of them
+// (see resolvePdoMapping); the refusal of a `written` count, or kNone.
+AbortCode readMappingObject(const od::ObjectDictionary& dictionary, const od::Object& object,
+                            uint16_t mappingIndex, size_t written, uint32_t* values,
+                            size_t* count) noexcept {
+  size_t entries = written;
+  if (written == kMappedCount) {
+    entries = static_cast<size_t>(dictionary.readUnsigned32(mappingIndex, 0, 0));
+    if (entries > PdoMap::kMaxEntries) {
+      entries = PdoMap::kMaxEntries;
     }
-    for (size_t i = 0; i < count; ++i) {
-      values[i] = dictionary.readUnsigned32(mappingIndex, static_cast<uint8_t>(i + 1U), 0);
-    }
-    return count;
+  } else if (written > PdoMap::kMaxEntries || written >= dictionary.entryCount(object)) {
+    return AbortCode::kMappingTooLong;
   }
-  for (size_t i = 0; i < fixed.count; ++i) {
-    const StaticPdoMapping& mapping = fixed.mappings[i];
-    if (mapping.communicationIndex == communicationIndex) {
-      size_t count = mapping.count;
-      if (count > PdoMap::kMaxEntries) {
-        count = PdoMap::kMaxEntries;
-      }
-      for (size_t e = 0; e < count; ++e) {
-        values[e] = mapping.entries[e];
-      }
-      return count;
+  for (size_t i = 0; i < entries; ++i) {
+    values[i] = dictionary.readUnsigned32(mappingIndex, static_cast<uint8_t>(i + 1U), 0);
+    if (written != kMappedCount && values[i] == 0U) {
+      return AbortCode::kParameterIncompatible;  // an enabled entry must map something
     }
   }
-  return 0;
+  *count = entries;
+  return AbortCode::kNone;
 }
 
 }  // namespace
 
-bool resolvePdoMapping(PdoContext& context, uint16_t communicationIndex, PdoDirection direction,
-                       PdoMap* map) noexcept {
-  uint32_t values[PdoMap::kMaxEntries];
-  const size_t count = readMappingValues(
-      context.access.dictionary(), context.profile.staticMappings, communicationIndex, values);
-  return map->resolve(context.access, values, count, direction) == AbortCode::kNone;
+AbortCode resolvePdoMapping(PdoContext& context, uint16_t communicationIndex, PdoMap* map,
+                            size_t written) noexcept {
+  const od::ObjectDictionary& dictionary = context.access.dictionary();
+  uint32_t read[PdoMap::kMaxEntries];
+  const uint32_t* values = read;
+  size_t count = 0;
+  const auto mappingIndex = static_cast<uint16_t>(communicationIndex + 0x200U);
+  const od::Object* object = dictionary.findObject(mappingIndex);
+  if (object != nullptr) {
+    const AbortCode refused =
+        readMappingObject(dictionary, *object, mappingIndex, written, read, &count);
+    if (refused != AbortCode::kNone) {
+      return refused;
+    }
+  } else {
+    const StaticPdoMappings& fixed = context.profile.staticMappings;
+    for (size_t i = 0; i < fixed.count; ++i) {
+      const StaticPdoMapping& mapping = fixed.mappings[i];
+      if (mapping.communicationIndex == communicationIndex) {
+        values = mapping.entries;
+        count = mapping.count < PdoMap::kMaxEntries ? mapping.count : PdoMap::kMaxEntries;
+        break;
+      }
+    }
+  }
+  const PdoDirection direction =
+      communicationIndex < 0x1800U ? PdoDirection::kReceive : PdoDirection::kTransmit;
+  return map->resolve(context.access, values, count, direction);
 }
 
 }  // namespace costa

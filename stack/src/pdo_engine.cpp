@@ -53,7 +53,7 @@ void PdoEngine::configure() noexcept {
 }
 
 void PdoEngine::configureChannel(bool receive, size_t number) noexcept {
-  bool resolved = false;
+  AbortCode resolved = AbortCode::kNone;
   if (receive) {
     resolved = rpdos_[number].configure(context_);
   } else {
@@ -65,7 +65,7 @@ void PdoEngine::configureChannel(bool receive, size_t number) noexcept {
       tpdo.stop();
     }
   }
-  if (!resolved) {
+  if (resolved != AbortCode::kNone) {
     ++unresolvableMappings_;
   }
 }

@@ -79,19 +79,8 @@ AbortCode PdoEngine::checkMappingWrite(const PdoChannel& channel, bool receive,
   if (length != 1U) {
     return AbortCode::kNone;
   }
-  const uint8_t count = data[0];
-  if (count > PdoMap::kMaxEntries || count >= dictionary.entryCount(*ref.object)) {
-    return AbortCode::kMappingTooLong;
-  }
-  uint32_t values[PdoMap::kMaxEntries];
-  for (uint8_t i = 0; i < count; ++i) {
-    values[i] = dictionary.readUnsigned32(index, static_cast<uint8_t>(i + 1U), 0);
-    if (values[i] == 0U) {
-      return AbortCode::kParameterIncompatible;  // an enabled entry must map something
-    }
-  }
   PdoMap candidate;
-  return candidate.resolve(context_.access, values, count, direction);
+  return resolvePdoMapping(context_, channel.communicationIndex(), &candidate, data[0]);
 }
 
 }  // namespace costa

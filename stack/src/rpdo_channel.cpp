@@ -8,7 +8,7 @@
 
 namespace costa {
 
-bool RpdoChannel::configure(PdoContext& context) noexcept {
+AbortCode RpdoChannel::configure(PdoContext& context) noexcept {
   (void)readCommunication(context);
   stop();
   // The EMCY conditions the old parameters raised no longer apply.

@@ -5,7 +5,7 @@
 
 namespace costa {
 
-bool TpdoChannel::configure(PdoContext& context) noexcept {
+AbortCode TpdoChannel::configure(PdoContext& context) noexcept {
   rtrAllowed_ = readCommunication(context);
   const od::ObjectDictionary& dictionary = context.access.dictionary();
   inhibit_ = static_cast<uint16_t>(dictionary.readUnsigned32(index_, 3, 0));

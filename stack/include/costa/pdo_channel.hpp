@@ -88,12 +88,21 @@ class PdoChannel {
   bool valid_ = false;
 };
 
+/// resolvePdoMapping()'s `written` when the count of mapped entries is the dictionary's (a
+/// value no written count has: sub-index 0 is a byte).
+constexpr size_t kMappedCount = SIZE_MAX;
+
 /// Resolves into `map` the mapping of the PDO whose communication parameter is at
-/// `communicationIndex`: the mapping object (index + 0x200) when the dictionary has one, else the
-/// device's static mapping (PdoProfile::staticMappings; at most PdoMap::kMaxEntries entries of
-/// either). False: the mapping
-/// cannot be resolved, and `map` is left empty (PdoMap::resolve).
-bool resolvePdoMapping(PdoContext& context, uint16_t communicationIndex, PdoDirection direction,
-                       PdoMap* map) noexcept;
+/// `communicationIndex` (an RPDO's below 0x1800, else a TPDO's): the mapping object (index +
+/// 0x200) when the dictionary has one, else the device's static mapping
+/// (PdoProfile::staticMappings; at most PdoMap::kMaxEntries entries of either). The mapping
+/// cannot be resolved: its abort code (PdoMap::resolve), and `map` is left empty.
+///
+/// `written`: the count about to be written to the mapping object's sub-index 0, with its
+/// entries as the dictionary holds them (a write checked before it is made). A count beyond
+/// kMaxEntries or the object's sub-indices is kMappingTooLong, an entry of 0 among them
+/// kParameterIncompatible (`map` left as it was for either).
+AbortCode resolvePdoMapping(PdoContext& context, uint16_t communicationIndex, PdoMap* map,
+                            size_t written = kMappedCount) noexcept;
 
 }  // namespace costa

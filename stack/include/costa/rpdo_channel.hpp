@@ -39,12 +39,13 @@ class RpdoChannel : public PdoChannel {
   bool answered() const noexcept { return features::kQuirkProfiles && answer_ != 0U; }
 
   /// Reads the communication parameters and resolves the mapping; drops held data and clears
-  /// the EMCY conditions (0x8210, 0x8220, 0x8250) the old parameters raised. False when the
-  /// mapping could not be resolved (the PDO then carries nothing). O(entries x log objects).
-  bool configure(PdoContext& context) noexcept;
+  /// the EMCY conditions (0x8210, 0x8220, 0x8250) the old parameters raised. The abort code
+  /// of a mapping that could not be resolved (the PDO then carries nothing), else kNone.
+  /// O(entries x log objects).
+  AbortCode configure(PdoContext& context) noexcept;
   /// Resolves the mapping again (a hook was attached). Same result as configure().
-  bool resolveMapping(PdoContext& context) noexcept {
-    const bool resolved = resolvePdoMapping(context, index_, PdoDirection::kReceive, &map_);
+  AbortCode resolveMapping(PdoContext& context) noexcept {
+    const AbortCode resolved = resolvePdoMapping(context, index_, &map_);
     updateQuietDlc();
     return resolved;
   }

@@ -24,12 +24,13 @@ class TpdoChannel : public PdoChannel {
     eventDeadline_ = kNever;
   }
 
-  /// Reads the communication parameters and resolves the mapping. False when the mapping could
-  /// not be resolved (the PDO then carries nothing). O(entries x log objects).
-  bool configure(PdoContext& context) noexcept;
+  /// Reads the communication parameters and resolves the mapping. The abort code of a mapping
+  /// that could not be resolved (the PDO then carries nothing), else kNone.
+  /// O(entries x log objects).
+  AbortCode configure(PdoContext& context) noexcept;
   /// Resolves the mapping again (a hook was attached). Same result as configure().
-  bool resolveMapping(PdoContext& context) noexcept {
-    return resolvePdoMapping(context, index_, PdoDirection::kTransmit, &map_);
+  AbortCode resolveMapping(PdoContext& context) noexcept {
+    return resolvePdoMapping(context, index_, &map_);
   }
 
   bool rtrAllowed() const noexcept { return rtrAllowed_; }
