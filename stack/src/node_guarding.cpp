@@ -4,6 +4,22 @@
 #include "costa/heartbeat_producer.hpp"
 
 namespace costa {
+namespace {
+
+/// `value` x `factor` modulo 2^64 (what the `*` of uint64_t gives), by shift and add: one step
+/// per bit of `factor`. Cortex-M0 has no 32 x 32 -> 64 multiplication; this takes fewer bytes
+/// than the C library's 64-bit multiplication routine.
+uint64_t multiply(uint64_t value, uint32_t factor) noexcept {
+  uint64_t product = 0;
+  for (; factor != 0U; factor >>= 1U, value <<= 1U) {
+    if ((factor & 1U) != 0U) {
+      product += value;
+    }
+  }
+  return product;
+}
+
+}  // namespace
 
 void NodeGuarding::reset(uint8_t nodeId, uint8_t toggleStart) noexcept {
   nodeId_ = nodeId;
@@ -15,8 +31,8 @@ void NodeGuarding::reset(uint8_t nodeId, uint8_t toggleStart) noexcept {
 
 uint64_t NodeGuarding::lifeTime() const noexcept {
   // Up to 65,535 ms x 255: more than LongTimer's steps, as CiA 301 allows.
-  return uint64_t{1000} * dictionary_.readUnsigned32(kGuardTimeIndex, 0, 0) *
-         dictionary_.readUnsigned32(kLifeTimeFactorIndex, 0, 0);
+  const uint64_t guardTime = multiply(dictionary_.readUnsigned32(kGuardTimeIndex, 0, 0), 1000U);
+  return multiply(guardTime, dictionary_.readUnsigned32(kLifeTimeFactorIndex, 0, 0));
 }
 
 void NodeGuarding::restartLife(Microseconds now) noexcept {
