@@ -209,5 +209,25 @@ TEST_F(IndicatorsTest, AMissingSyncTripleFlashesErrorAfterOneAndAHalfPeriods) {
   EXPECT_EQ(indicators_.error(), IndicatorState::kOff);
 }
 
+TEST_F(IndicatorsTest, TheSyncTimeoutOfALongPeriodIsAtMostTheLongestDelay) {
+  // 0x1006 = 0x55555554 µs: 1.5 times it is kLongestDelay - 1; 0xFFFFFFFF µs: beyond, so the
+  // longest delay.
+  const char* const periods[] = {"54 55 55 55", "FF FF FF FF"};
+  const Microseconds timeouts[] = {kLongestDelay - 1U, kLongestDelay};
+  for (int i = 0; i < 2; ++i) {
+    frames(std::string("rx 601 [8] 23 06 10 00 ") + periods[i] + R"(
+      tx 581 [8] 60 06 10 00 00 00 00 00
+      rx 080 [0]
+    )");
+    begin();
+    bus_.advance(timeouts[i] - 1U);
+    step();
+    EXPECT_EQ(indicators_.error(), IndicatorState::kOff) << i;
+    bus_.advance(1);
+    step();
+    EXPECT_EQ(indicators_.error(), IndicatorState::kTripleFlash) << i;
+  }
+}
+
 }  // namespace
 }  // namespace costa::test

@@ -37,8 +37,9 @@ Pattern patternOf(IndicatorState state) noexcept {
 
 /// 1.5 times the SYNC period (0x1006, µs), within the longest delay the clock takes.
 Microseconds syncTimeout(uint32_t period) noexcept {
-  const uint64_t timeout = uint64_t{period} + period / 2U;
-  return timeout < kLongestDelay ? static_cast<Microseconds>(timeout) : kLongestDelay;
+  // period + half < kLongestDelay in 32 bits: half is at most kLongestDelay.
+  const uint32_t half = period / 2U;
+  return period < kLongestDelay - half ? period + half : kLongestDelay;
 }
 
 }  // namespace
@@ -92,7 +93,8 @@ bool Indicators::update(Led& led, IndicatorState state, bool inverted, Microseco
     led.phaseEnd = pattern.count != 0U ? at(now, pattern.phases[0]) : kNever;
   }
   while (pattern.count != 0U && reached(now, led.phaseEnd)) {
-    led.phase = static_cast<uint8_t>((led.phase + 1U) % pattern.count);
+    // led.phase is below pattern.count: it restarts at 0 with every change of pattern.
+    led.phase = led.phase + 1U < pattern.count ? static_cast<uint8_t>(led.phase + 1U) : uint8_t{0};
     led.phaseEnd = at(led.phaseEnd, pattern.phases[led.phase]);
   }
   // Even phases are on; an inverted LED is off where the other is on.
