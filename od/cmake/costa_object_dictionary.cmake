@@ -25,6 +25,7 @@ set_property(GLOBAL PROPERTY COSTA_ODGEN_SOURCES
   cpp_layout.py
   cpp_literals.py
   cpp_names.py
+  cpp_rows.py
   data_types.py
   diagnostics.py
   eds_model.py

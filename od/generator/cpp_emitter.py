@@ -3,11 +3,11 @@ NAME_od_names.cpp. Pure functions of the model; the same model gives the same by
 
 import struct
 import zlib
-from dataclasses import dataclass, field
 
-from cpp_layout import CONSTANTS, VALUES, Block, Layout, plan_layout
+from cpp_layout import VALUES, Block, Layout, plan_layout
 from cpp_literals import (comment_text, c_string, limit_pattern, octets_literal,
                           pattern_literal, scalar_literal, text_literal)
+from cpp_rows import MERGEABLE_KINDS, attributes_text, place_rows, rows_of
 from data_types import GROUP_ENUMERATORS, GROUP_NONE, OBJECT_CODES
 from eds_model import Device, Entry
 
@@ -154,7 +154,7 @@ def default_records(device: Device, layout: Layout) -> tuple:
         data = default_bytes(entry)
         if not any(data) and not entry.node_id_relative:
             continue
-        numeric = entry.data_type.kind in _MERGEABLE_KINDS
+        numeric = entry.data_type.kind in MERGEABLE_KINDS
         flags = (["kDefaultNumber"] if numeric else []) + \
             (["kDefaultNodeId"] if entry.node_id_relative else [])
         offset, label = layout.offsets[(entry.index, entry.sub)], f"0x{entry.index:04X}:{entry.sub}"
@@ -205,10 +205,6 @@ def _defaults_text(device: Device, layout: Layout) -> list:
     return lines, len(records)
 
 
-def _attributes_text(entry: Entry) -> str:
-    return " | ".join(f"costa::od::{n}" for n in entry.attribute_names())
-
-
 def _group_text(group: int) -> str:
     if group in GROUP_ENUMERATORS:
         return f"costa::od::{GROUP_ENUMERATORS[group]}"
@@ -229,85 +225,8 @@ def _limits(device: Device) -> tuple:
     return rows, row_of
 
 
-_MERGEABLE_KINDS = ("bool", "signed", "unsigned", "real")
 _DEFAULT_PIECE = 255  # the most bytes one od::DefaultValue holds
 _DEFAULT_MIDDLE_BITS = 0x1FFF0000  # bits a number held as itself leaves clear (16..28)
-
-
-def rows_of(obj, row_of: dict) -> list:
-    """The rows of an object: runs of consecutive sub-indices that share every property of a
-    SubEntry and store fixed-size values back to back (array items, record members of one
-    type). Each row is a list of entries."""
-    rows = []
-    for entry in obj.entries:
-        if rows:
-            last = rows[-1][-1]
-            same = (entry.sub == last.sub + 1 and len(rows[-1]) < 255
-                    and entry.data_type is last.data_type
-                    and entry.data_type.kind in _MERGEABLE_KINDS
-                    and entry.attributes == last.attributes and entry.size == last.size
-                    and entry.group == last.group
-                    and row_of.get((entry.index, entry.sub)) == row_of.get((last.index, last.sub)))
-            if same:
-                rows[-1].append(entry)
-                continue
-        rows.append([entry])
-    return rows
-
-
-@dataclass
-class _RowRun:
-    label: str   # the objects that use it, for the comment above it
-    rows: list   # rows_of() of the first of them
-
-
-@dataclass
-class _PlacedRows:
-    runs: list = field(default_factory=list)        # _RowRun, in the order of kRows
-    first_rows: dict = field(default_factory=dict)  # index -> position of its run in kRows
-    row_counts: dict = field(default_factory=dict)  # index -> rows of the object
-    shared_checks: list = field(default_factory=list)  # (offset, offset it shares, label)
-
-
-def _row_key(row: list, layout: Layout, row_of: dict) -> tuple:
-    """What a row of kRows holds, independent of its object: equal keys, equal rows."""
-    first = row[0]
-    key = (first.index, first.sub)
-    block = CONSTANTS if first.in_rom else VALUES
-    return (first.sub, len(row), first.data_type.enumerator, _attributes_text(first),
-            first.size, first.group, row_of.get(key), block, layout.positions[key])
-
-
-def _place_rows(device: Device, layout: Layout, row_of: dict) -> _PlacedRows:
-    """The runs of kRows: one per shape of object (its rows, and the C++ types of its members
-    of each block, which put its values at the same offsets from its bases)."""
-    placed, seen = _PlacedRows(), {}
-    for obj in device.objects:
-        rows = rows_of(obj, row_of)
-        # ROM rows hold where their values are in the constants block: objects share them only
-        # when they share their constants.
-        shape = (layout.shapes.get((obj.index, VALUES)), layout.shapes.get((obj.index, CONSTANTS)),
-                 layout.bases.get((obj.index, CONSTANTS)),
-                 tuple(_row_key(row, layout, row_of) for row in rows))
-        placed.row_counts[obj.index] = len(rows)
-        label = f"0x{obj.index:04X} {comment_text(obj.name)}"
-        if shape in seen:
-            run, first_row = seen[shape]
-            placed.first_rows[obj.index] = first_row
-            run.label += f", 0x{obj.index:04X}"
-            for own, shared in zip(rows, run.rows):
-                own_key, shared_key = (own[0].index, own[0].sub), (shared[0].index, shared[0].sub)
-                if layout.relative[own_key] != layout.relative[shared_key]:
-                    placed.shared_checks.append((layout.relative[own_key],
-                                                 layout.relative[shared_key],
-                                                 f"0x{own[0].index:04X}:{own[0].sub}"))
-            continue
-        run = _RowRun(label, rows)
-        first_row = sum(len(r.rows) for r in placed.runs)
-        seen[shape] = (run, first_row)
-        placed.first_rows[obj.index] = first_row
-        placed.runs.append(run)
-    return placed
 
 
 def object_slots(indices: list) -> tuple:
@@ -339,7 +258,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
             lines.append(f"{_INDENT * 2}{{{pattern_literal(low)}, {pattern_literal(high)}}},")
         lines += ["};", ""]
     run_checks = []
-    placed = _place_rows(device, layout, row_of)
+    placed = place_rows(device, layout, row_of)
     lines.append("// Every object's rows; objects of one shape share theirs (Object::firstRow).")
     lines.append("constexpr costa::od::SubEntry kRows[] = {")
     for run in placed.runs:
@@ -350,7 +269,7 @@ def source_text(device: Device, name: str, source: str, layout: Layout) -> str:
             limits = f"{row_of[key] + 1}" if key in row_of else "0"
             offset = layout.offsets[key] if first.in_rom else layout.relative[key]
             lines.append(f"{_INDENT * 2}{{{first.sub}, {len(row)}, costa::od::DataType::"
-                         f"{first.data_type.enumerator}, {_attributes_text(first)}, "
+                         f"{first.data_type.enumerator}, {attributes_text(first)}, "
                          f"{first.size}, {_group_text(first.group)}, {limits}, "
                          f"{offset}}},")
     if not placed.runs:
