@@ -33,10 +33,9 @@ void PdoEngine::bind() noexcept {
     constexpr uint16_t kAnswerOffset = kTpdoCommunicationFirst - kRpdoCommunicationFirst;
     for (size_t i = 0; i < rpdoCount_; ++i) {
       const auto answer = static_cast<uint16_t>(rpdos_[i].communicationIndex() + kAnswerOffset);
-      for (size_t t = 0; t < tpdoCount_; ++t) {
-        if (tpdos_[t].communicationIndex() == answer) {
-          rpdos_[i].answerWith(t);
-        }
+      size_t tpdo = 0;
+      if (findChannel(false, answer, &tpdo) != nullptr) {
+        rpdos_[i].answerWith(tpdo);
       }
     }
   }

@@ -12,9 +12,10 @@ AbortCode RpdoChannel::configure(PdoContext& context) noexcept {
   (void)readCommunication(context);
   stop();
   // The EMCY conditions the old parameters raised no longer apply.
-  setCondition(context, kTimedOut, false);
-  setCondition(context, kTooShort, false);
-  setCondition(context, kTooLong, false);
+  static constexpr Condition kConditions[] = {kTimedOut, kTooShort, kTooLong};
+  for (const Condition condition : kConditions) {
+    setCondition(context, condition, false);
+  }
   return resolveMapping(context);
 }
 
