@@ -42,7 +42,7 @@ void TpdoChannel::stop() noexcept {
 }
 
 void TpdoChannel::onRemoteRequest(PdoContext& context, Microseconds now) noexcept {
-  if (!running_ || !valid_ || !rtrAllowed_) {
+  if (!rtrAllowed_) {  // (running and valid: PdoEngine::remoteRequest() asked)
     return;
   }
   if (type_ == 252U) {
@@ -59,7 +59,7 @@ void TpdoChannel::onRemoteRequest(PdoContext& context, Microseconds now) noexcep
 }
 
 void TpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
-  if (!running_ || !valid_ || !eventDriven()) {
+  if (!valid_ || !eventDriven()) {  // (running: PdoEngine::process() asks only then)
     return;
   }
   if (reached(now, eventDeadline_)) {
@@ -76,7 +76,7 @@ void TpdoChannel::process(PdoContext& context, Microseconds now) noexcept {
 }
 
 Microseconds TpdoChannel::nextDeadline(Microseconds now) const noexcept {
-  if (!running_ || !valid_ || !eventDriven()) {
+  if (!valid_ || !eventDriven()) {  // (running: every caller asks only then)
     return kNever;
   }
   // The end of an inhibit time is a deadline too: it expires there.

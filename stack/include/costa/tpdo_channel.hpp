@@ -55,8 +55,9 @@ class TpdoChannel : public PdoChannel {
   }
   void stop() noexcept;
 
-  /// A SYNC with `counter` (0 when the SYNC carries none). Synchronous PDOs are sent with
-  /// `expiry` (end of the SYNC window) so that they are dropped if they cannot go out in time.
+  /// A SYNC with `counter` (0 when the SYNC carries none), asked while running (as process()).
+  /// Synchronous PDOs are sent with `expiry` (end of the SYNC window) so that they are dropped
+  /// if they cannot go out in time.
   COSTA_HOT_INLINE void onSync(PdoContext& context, uint8_t counter, Microseconds now,
                                Microseconds expiry) noexcept {
     // Running, valid, synchronous cyclic and counting: the usual case, expanded where speed
@@ -68,11 +69,12 @@ class TpdoChannel : public PdoChannel {
       }
       return;
     }
-    if (running_ && valid_) {
+    if (valid_) {  // (running: PdoEngine::onSync() asks only then)
       onOtherSync(context, counter, now, expiry);
     }
   }
-  /// A remote request: answered when the COB-ID allows RTR and the type does (profile).
+  /// A remote request, the PDO running and valid: answered when the COB-ID allows RTR and the
+  /// type does (profile).
   void onRemoteRequest(PdoContext& context, Microseconds now) noexcept;
   /// The application changed mapped data (or asks for a transmission): an event. True when it
   /// raised one that was not pending already.
@@ -89,9 +91,11 @@ class TpdoChannel : public PdoChannel {
   void withdrawEvent() noexcept { event_ = false; }
   bool maps(const od::EntryRef& ref) const noexcept { return map_.contains(ref); }
 
-  /// Event-driven transmission: events and the event timer, within the inhibit time.
+  /// Event-driven transmission: events and the event timer, within the inhibit time. Asked
+  /// while running (PdoEngine keeps every TPDO running exactly while it runs).
   void process(PdoContext& context, Microseconds now) noexcept;
-  /// When process() has work: an event or the event timer, the end of the inhibit time.
+  /// When process() has work: an event or the event timer, the end of the inhibit time. Asked
+  /// while running, as process().
   Microseconds nextDeadline(Microseconds now) const noexcept;
 
  private:
