@@ -101,6 +101,20 @@ TEST_F(FrameRouterTest, AFullTableRefusesAndKeepsItsRoutes) {
   EXPECT_EQ(routeOf(0x185), routeText(Route::kTpdoRequest, 5));
 }
 
+TEST(FrameRouterCapacityTest, MoreThan255SlotsHoldAt255Routes) {
+  static RouteEntry slots[300];
+  FrameRouter router(slots, 300);
+  router.clear();
+  for (uint16_t i = 0; i < UINT8_MAX; ++i) {
+    EXPECT_TRUE(router.add(i, Route::kRpdo, static_cast<uint8_t>(i)));
+  }
+  EXPECT_FALSE(router.add(0x7FF, Route::kRpdo));
+  EXPECT_EQ(router.size(), size_t{UINT8_MAX});
+  EXPECT_EQ(router.find(0x7FF), nullptr);
+  ASSERT_NE(router.find(254), nullptr);
+  EXPECT_EQ(router.find(254)->channel, 254U);
+}
+
 TEST_F(FrameRouterTest, AnIdentifierBeyondElevenBitsIsRefused) {
   router_.clear();
   EXPECT_FALSE(router_.add(0x800, Route::kRpdo));

@@ -2,18 +2,8 @@
 
 namespace costa {
 
-void FrameRouter::clear() noexcept {
-  count_ = 0;
-  shared_ = false;
-  fastId_ = kNoFastId;
-  for (uint8_t& first : first_) {
-    first = 0;
-  }
-  stale_ = false;
-}
-
 bool FrameRouter::add(uint16_t id, Route route, uint8_t channel) noexcept {
-  if (count_ == capacity_ || id > kLargestId || count_ >= UINT8_MAX) {
+  if (count_ == capacity_ || id > kLargestId) {
     return false;
   }
   size_t at = count_;

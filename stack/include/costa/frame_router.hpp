@@ -44,10 +44,19 @@ class FrameRouter {
  public:
   static constexpr uint32_t kLargestId = 0x7FF;  ///< 11-bit identifiers only
 
-  FrameRouter(RouteEntry* slots, size_t capacity) noexcept : slots_(slots), capacity_(capacity) {}
+  /// Over `capacity` slots, of which it uses at most 255 (the index holds 8-bit positions).
+  FrameRouter(RouteEntry* slots, size_t capacity) noexcept
+      : slots_(slots),
+        capacity_(static_cast<uint8_t>(capacity < UINT8_MAX ? capacity : UINT8_MAX)) {}
 
   /// Empties the table.
-  void clear() noexcept;
+  void clear() noexcept {
+    count_ = 0;
+    shared_ = false;
+    fastId_ = kNoFastId;
+    __builtin_memset(first_, 0, sizeof(first_));  // one call: smaller than a loop on Thumb-1
+    stale_ = false;
+  }
   /// Adds a route (`id` <= kLargestId), keeping the table sorted by CAN-ID (routes with one id
   /// stay in the order they were added). False when the table is full (the capacity covers
   /// every service and PDO of the node, so this does not happen for a node's own table).
@@ -108,8 +117,8 @@ class FrameRouter {
   static constexpr size_t kFunctionCodes = 16;
 
   RouteEntry* slots_;
-  size_t capacity_;
-  size_t count_ = 0;
+  uint8_t capacity_;  ///< at most UINT8_MAX
+  uint8_t count_ = 0;
   // (the flags before the index, within reach of Thumb-1's short offsets: every frame reads them)
   bool stale_ = true;
   bool shared_ = false;  ///< some CAN-ID has more than one route

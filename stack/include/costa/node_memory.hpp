@@ -37,7 +37,8 @@ struct NodeMemory {
   size_t emcyQueueCapacity;
   HeartbeatMonitor* heartbeatMonitors;  ///< One per sub-index of 0x1016.
   size_t heartbeatMonitorCapacity;
-  RouteEntry* routes;  ///< The frame routing table: one entry per CAN-ID a service takes.
+  RouteEntry* routes;  ///< The frame routing table: one entry per CAN-ID a service takes (at
+                       ///< most 255 are used).
   size_t routeCapacity;
   SdoServerSlot* sdoServerSlots;  ///< One per additional SDO server (0x1201..0x127F).
   uint8_t* sdoServerBuffers;      ///< sdoBufferSize bytes per additional SDO server.
