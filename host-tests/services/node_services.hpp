@@ -53,7 +53,7 @@ struct NodeServices {
         bitTiming(settings.bitRateControl, settings.bitTiming),
         router(routes, 8),
         errorControl(dictionary, settings.profile.errorControl, tx, clock, nmt, monitors, 2),
-        lssBridge(settings, bitTiming, stored, listeners, nmt),
+        lssBridge(nmt),
         lss(tx, lssBridge),
         nmt(NmtStateMachine::Services{dictionary, settings, clock, listeners, tx, sdo, sdoServers,
                                       heartbeat, emcy, sync, time, pdos, errorControl, stored,

@@ -21,14 +21,9 @@ class NmtStateMachine;
 
 class LssBridge final : public LssSlaveHost {
  public:
-  LssBridge(const NodeSettings& settings, BitTimingSwitch& bitTiming,
-            StoredParametersChoice& stored, const NodeListeners& listeners,
-            NmtStateMachine& nmt) noexcept
-      : settings_(settings),
-        bitTiming_(bitTiming),
-        stored_(stored),
-        listeners_(listeners),
-        nmt_(nmt) {}
+  /// Over the node's state machine `nmt`, through which it reaches the services it acts on
+  /// (settings, bit timing, stored parameters, listeners: NmtStateMachine::Services).
+  explicit LssBridge(NmtStateMachine& nmt) noexcept : nmt_(nmt) {}
 
   /// Table selector 0 and an index of NodeSettings::lssBitRates.
   bool bitTimingSupported(LssBitTiming timing) noexcept override;
@@ -39,10 +34,6 @@ class LssBridge final : public LssSlaveHost {
   void requestResetCommunication() noexcept override;
 
  private:
-  const NodeSettings& settings_;
-  BitTimingSwitch& bitTiming_;
-  StoredParametersChoice& stored_;
-  const NodeListeners& listeners_;
   NmtStateMachine& nmt_;
 };
 

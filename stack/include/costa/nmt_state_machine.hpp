@@ -84,7 +84,7 @@ class NmtStateMachine {
         services_(services) {}
 
   NmtState state() const noexcept { return state_; }
-  /// The services it acts on (which the node's error control acts on too).
+  /// The services it acts on (which the node's error control and LSS bridge act on too).
   const Services& services() const noexcept { return services_; }
   /// The node-id in use (1..127), or 0xFF: none yet.
   uint8_t nodeId() const noexcept { return nodeId_; }

@@ -334,7 +334,7 @@ Node::Node(const od::Definition& definition, void* values, Memory& memory, CanTr
       bitTiming_(settings_.bitRateControl, settings_.bitTiming),
       errorControl_(dictionary_, settings_.profile.errorControl, tx_, clock_, nmt_,
                     memory.heartbeatMonitors, memory.heartbeatMonitorCapacity),
-      lssBridge_(settings_, bitTiming_, stored_, listeners_, nmt_),
+      lssBridge_(nmt_),
       lss_(tx_, lssBridge_),
       heartbeat_(dictionary_, tx_, clock_),
       nmt_(NmtStateMachine::Services{dictionary_, settings_, clock_, listeners_, tx_, sdo_,
