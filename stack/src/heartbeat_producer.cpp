@@ -5,10 +5,6 @@
 
 namespace costa {
 
-void HeartbeatProducer::restart(Microseconds now) noexcept {
-  restartWith(now, dictionary_.readUnsigned32(kIndex, 0, 0));
-}
-
 void HeartbeatProducer::restartWith(Microseconds now, uint32_t periodMs) noexcept {
   period_ = millisecondsToMicroseconds(periodMs);
   if (period_ == 0U) {

@@ -14,12 +14,6 @@ constexpr uint16_t kApplicationLast = 0xFFFF;
 
 }  // namespace
 
-void NmtStateMachine::powerOn() noexcept {
-  services_.stored.layOut();
-  powerOn_ = true;
-  resetNode();
-}
-
 void NmtStateMachine::resetNode() noexcept {
   setState(NmtState::kInitialising);
   // Reset node is a power-on reset of the application (CiA 301): the LSS configuration is read
@@ -112,15 +106,6 @@ void NmtStateMachine::enter(NmtState state) noexcept {
     return;
   }
   setState(state);
-}
-
-void NmtStateMachine::process() noexcept {
-  if (startPending_) {
-    startPending_ = false;
-    if (state_ == NmtState::kPreOperational) {
-      setState(NmtState::kOperational);  // automatic start after the boot-up
-    }
-  }
 }
 
 void NmtStateMachine::setState(NmtState state) noexcept {

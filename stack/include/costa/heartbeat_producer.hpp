@@ -20,7 +20,9 @@ class HeartbeatProducer : public ObjectHook {
   void setNodeId(uint8_t nodeId) noexcept { nodeId_ = nodeId; }
 
   /// (Re)starts production from 0x1017: the first heartbeat one period after `now`. 0 disables.
-  void restart(Microseconds now) noexcept;
+  void restart(Microseconds now) noexcept {
+    restartWith(now, dictionary_.readUnsigned32(kIndex, 0, 0));
+  }
   /// restart() with the period `periodMs` (the value of 0x1017).
   void restartWith(Microseconds now, uint32_t periodMs) noexcept;
   void stop() noexcept { next_ = kNever; }

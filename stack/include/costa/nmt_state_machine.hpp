@@ -94,7 +94,11 @@ class NmtStateMachine {
   void setAutomaticStart(bool on) noexcept { automaticStart_ = on; }
 
   /// Power-on: the storage is laid out, then reset node.
-  void powerOn() noexcept;
+  void powerOn() noexcept {
+    services_.stored.layOut();
+    powerOn_ = true;
+    resetNode();
+  }
   void resetNode() noexcept;
   void resetCommunication() noexcept;
 
@@ -108,7 +112,14 @@ class NmtStateMachine {
   void enter(NmtState state) noexcept;
 
   /// Runs the automatic start when it is due.
-  void process() noexcept;
+  void process() noexcept {
+    if (startPending_) {
+      startPending_ = false;
+      if (state_ == NmtState::kPreOperational) {
+        setState(NmtState::kOperational);  // automatic start after the boot-up
+      }
+    }
+  }
   Microseconds nextDeadline() const noexcept {
     return startPending_ ? services_.clock.now : kNever;
   }
