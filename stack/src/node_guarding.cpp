@@ -2,24 +2,9 @@
 
 #include "costa/cob_ids.hpp"
 #include "costa/heartbeat_producer.hpp"
+#include "costa/shift_arithmetic.hpp"
 
 namespace costa {
-namespace {
-
-/// `value` x `factor` modulo 2^64 (what the `*` of uint64_t gives), by shift and add: one step
-/// per bit of `factor`. Cortex-M0 has no 32 x 32 -> 64 multiplication; this takes fewer bytes
-/// than the C library's 64-bit multiplication routine.
-uint64_t multiply(uint64_t value, uint32_t factor) noexcept {
-  uint64_t product = 0;
-  for (; factor != 0U; factor >>= 1U, value <<= 1U) {
-    if ((factor & 1U) != 0U) {
-      product += value;
-    }
-  }
-  return product;
-}
-
-}  // namespace
 
 void NodeGuarding::reset(uint8_t nodeId, uint8_t toggleStart) noexcept {
   nodeId_ = nodeId;

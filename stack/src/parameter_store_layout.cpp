@@ -1,6 +1,6 @@
 #include "costa/parameter_store.hpp"
 
-#include "costa/shift_division.hpp"
+#include "costa/shift_arithmetic.hpp"
 
 namespace costa {
 namespace {

@@ -3,7 +3,7 @@
 #include "costa/cob_ids.hpp"
 #include "costa/frame_router.hpp"
 #include "costa/od/little_endian.hpp"
-#include "costa/shift_division.hpp"
+#include "costa/shift_arithmetic.hpp"
 
 namespace costa {
 namespace {
