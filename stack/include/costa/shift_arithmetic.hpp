@@ -7,13 +7,14 @@
 
 #include <stdint.h>
 
-#if defined(__ARM_ARCH_ISA_THUMB) && __ARM_ARCH_ISA_THUMB == 1
-#define COSTA_SHIFT_ARITHMETIC 1
-#else
-#define COSTA_SHIFT_ARITHMETIC 0
-#endif
-
 namespace costa {
+
+/// True on a Thumb-1 core (Cortex-M0, M0+): no divide instruction, no 32 x 32 -> 64 multiply.
+#if defined(__ARM_ARCH_ISA_THUMB) && __ARM_ARCH_ISA_THUMB == 1
+inline constexpr bool kShiftArithmetic = true;
+#else
+inline constexpr bool kShiftArithmetic = false;
+#endif
 
 struct Quotient {
   uint32_t quotient;
@@ -56,20 +57,20 @@ constexpr uint64_t shiftMultiply(uint64_t value, uint32_t factor) noexcept {
 
 /// `value` / `divisor` and `value` % `divisor` (`divisor` not 0).
 constexpr Quotient divide(uint32_t value, uint32_t divisor) noexcept {
-#if COSTA_SHIFT_ARITHMETIC
-  return shiftDivide(value, divisor);
-#else
-  return Quotient{value / divisor, value % divisor};
-#endif
+  if constexpr (kShiftArithmetic) {
+    return shiftDivide(value, divisor);
+  } else {
+    return Quotient{value / divisor, value % divisor};
+  }
 }
 
 /// `value` x `factor` modulo 2^64.
 constexpr uint64_t multiply(uint64_t value, uint32_t factor) noexcept {
-#if COSTA_SHIFT_ARITHMETIC
-  return shiftMultiply(value, factor);
-#else
-  return value * factor;
-#endif
+  if constexpr (kShiftArithmetic) {
+    return shiftMultiply(value, factor);
+  } else {
+    return value * factor;
+  }
 }
 
 }  // namespace costa
